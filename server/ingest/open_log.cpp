@@ -1,0 +1,66 @@
+// open_log(): sniff the decoded first bytes, then hand a fresh byte stream
+// to the reader for that format.
+#include <functional>
+
+#include "server/ingest/byte_source.hpp"
+#include "server/ingest/log_format.hpp"
+#include "server/ingest/state_source.hpp"
+#include "server/ingest/text_log_source.hpp"
+
+namespace mc::ingest {
+
+void record_skip(IngestStats& stats, std::string message) {
+  ++stats.skipped;
+  if (stats.errors.size() < IngestStats::kMaxErrors) stats.errors.push_back(std::move(message));
+}
+
+namespace {
+
+using Reopen = std::function<std::unique_ptr<ByteSource>(std::string&)>;
+
+std::unique_ptr<StateSource> open_with(const Reopen& reopen, const std::string& what,
+                                       std::string& error) {
+  auto probe = reopen(error);
+  if (!probe) return nullptr;
+  // Enough to see past a "ULG6\n" header to the first record.
+  std::string head(512, '\0');
+  std::size_t got = 0;
+  while (got < head.size()) {
+    const std::size_t k = probe->read(head.data() + got, head.size() - got);
+    if (k == 0) break;
+    got += k;
+  }
+  head.resize(got);
+  if (got == 0) {
+    error = what + ": empty input" + (probe->error().empty() ? "" : " (" + probe->error() + ")");
+    return nullptr;
+  }
+  const LogFormat fmt = sniff_log_format(head);
+  probe.reset();
+  auto src = reopen(error);
+  if (!src) return nullptr;
+  switch (fmt) {
+    case LogFormat::TextV4:
+    case LogFormat::TextV5:
+    case LogFormat::TextV6:
+      return make_text_log_source(std::move(src));
+    case LogFormat::Unknown:
+      error = what + ": not a game log (unrecognised first bytes)";
+      return nullptr;
+    default:
+      error = what + ": " + log_format_name(fmt) + " logs are not supported yet";
+      return nullptr;
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<StateSource> open_log(const std::string& path, std::string& error) {
+  return open_with([&](std::string& err) { return open_file_source(path, err); }, path, error);
+}
+
+std::unique_ptr<StateSource> open_log_memory(std::string_view bytes, std::string& error) {
+  return open_with([bytes](std::string&) { return open_memory_source(bytes); }, "memory", error);
+}
+
+}  // namespace mc::ingest
