@@ -1,0 +1,63 @@
+// A channel is one game's broadcast: the hello every spectator gets first,
+// the current group of pictures (the latest keyframe and the deltas since),
+// and the set of spectators. Frames are encoded once by the publisher and
+// the same immutable bytes go to every subscriber.
+//
+// Thread safety: every member may be called from any thread. publish_*() is
+// expected from one producer thread, so subscribers see frames in order.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "server/relay/message.hpp"
+
+namespace mc::relay {
+
+// Anything that receives a channel's messages (a WebSocket session, a recorder).
+class Subscriber {
+ public:
+  virtual ~Subscriber() = default;
+  // Called from the publisher's thread; must not block.
+  virtual void deliver(const Message& m) = 0;
+};
+
+class Channel {
+ public:
+  explicit Channel(std::string name) : name_(std::move(name)) {}
+
+  const std::string& name() const { return name_; }
+
+  // The hello a joiner receives first. Replacing it also sends it to the
+  // current spectators (the game or its metadata changed).
+  void set_hello(std::string json);
+  // One encoded pose frame. A keyframe starts a new catch-up group.
+  void publish_frame(std::string bytes, bool keyframe);
+  // A JSON event or metadata change, sent to the current spectators only.
+  void publish_control(std::string json);
+
+  // Registers `s` and returns what it must send first, atomically with
+  // respect to publishing: the hello, then the latest keyframe and every
+  // delta since. A late joiner thus shows the current state at once.
+  std::vector<Message> join(const std::shared_ptr<Subscriber>& s);
+  void leave(const Subscriber* s);
+
+  std::size_t subscribers() const;
+  std::uint64_t frames_published() const { return frames_published_.load(); }
+
+ private:
+  void broadcast(const Message& m);
+
+  const std::string name_;
+  mutable std::mutex mutex_;
+  std::shared_ptr<const std::string> hello_;
+  std::vector<Message> gop_;  // latest keyframe + deltas since
+  std::vector<std::weak_ptr<Subscriber>> subscribers_;
+  std::atomic<std::uint64_t> frames_published_{0};
+};
+
+}  // namespace mc::relay

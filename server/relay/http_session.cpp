@@ -1,0 +1,147 @@
+#include "server/relay/http_session.hpp"
+
+#include <boost/asio/dispatch.hpp>
+#include <boost/beast/websocket.hpp>
+#include <chrono>
+
+#include "server/relay/channel.hpp"
+#include "server/relay/log.hpp"
+#include "server/relay/websocket_session.hpp"
+
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace net = boost::asio;
+
+namespace mc::relay {
+namespace {
+
+// Boost 1.74's Beast speaks boost::string_view; the rest of us std's.
+std::string_view sv(beast::string_view s) { return {s.data(), s.size()}; }
+beast::string_view bsv(std::string_view s) { return {s.data(), s.size()}; }
+
+// A request must arrive whole within this time; slowloris gets nothing.
+constexpr auto kRequestTimeout = std::chrono::seconds(30);
+
+http::response<http::string_body> text_response(const http::request<http::string_body>& req,
+                                                http::status status, std::string body,
+                                                std::string_view type = "text/plain; charset=utf-8") {
+  http::response<http::string_body> res{status, req.version()};
+  res.set(http::field::server, "matchcast");
+  res.set(http::field::content_type, bsv(type));
+  res.set(http::field::cache_control, "no-store");
+  res.keep_alive(req.keep_alive());
+  res.body() = std::move(body);
+  res.prepare_payload();
+  return res;
+}
+
+std::string_view path_of(std::string_view target) {
+  return target.substr(0, target.find('?'));
+}
+
+}  // namespace
+
+HttpSession::HttpSession(net::ip::tcp::socket&& socket, const HttpContext& context)
+    : stream_(std::move(socket)), context_(context) {}
+
+void HttpSession::run() {
+  net::dispatch(stream_.get_executor(),
+                beast::bind_front_handler(&HttpSession::do_read, shared_from_this()));
+}
+
+void HttpSession::do_read() {
+  parser_.emplace();
+  parser_->body_limit(context_.config.max_http_body);
+  parser_->header_limit(8 * 1024);
+  stream_.expires_after(kRequestTimeout);
+  http::async_read(stream_, buffer_, *parser_,
+                   beast::bind_front_handler(&HttpSession::on_read, shared_from_this()));
+}
+
+void HttpSession::on_read(beast::error_code ec, std::size_t) {
+  if (ec == http::error::end_of_stream) {
+    stream_.socket().shutdown(net::ip::tcp::socket::shutdown_send, ec);
+    return;
+  }
+  if (ec) {
+    // A malformed or oversized request: answer 400 when the connection can
+    // still carry it, then close.
+    if (ec != net::error::operation_aborted && ec != beast::error::timeout) {
+      http::request<http::string_body> dummy{http::verb::get, "/", 11};
+      dummy.keep_alive(false);
+      send(text_response(dummy, http::status::bad_request, "bad request\n"));
+    }
+    return;
+  }
+  ++context_.stats.http_requests;
+  http::request<http::string_body> req = parser_->release();
+  const std::string_view path = path_of(sv(req.target()));
+
+  if (beast::websocket::is_upgrade(req)) {
+    if (path != "/ws") return send(text_response(req, http::status::not_found, "no such stream\n"));
+    if (static_cast<std::size_t>(context_.stats.clients.load()) >= context_.config.max_clients) {
+      ++context_.stats.refused_full;
+      return send(text_response(req, http::status::service_unavailable, "server full\n"));
+    }
+    stream_.expires_never();
+    std::make_shared<WebSocketSession>(std::move(stream_), context_.channel, context_.config,
+                                       context_.stats)
+        ->run(std::move(req));
+    return;
+  }
+
+  if (req.method() != http::verb::get && req.method() != http::verb::head)
+    return send(text_response(req, http::status::method_not_allowed, "GET or HEAD only\n"));
+
+  if (path == "/healthz") return send(text_response(req, http::status::ok, "ok\n"));
+
+  auto file = context_.files.resolve(sv(req.target()));
+  if (!file) {
+    ++context_.stats.http_not_found;
+    return send(text_response(req, http::status::not_found, "not found\n"));
+  }
+  http::file_body::value_type body;
+  body.open(file->c_str(), beast::file_mode::scan, ec);
+  if (ec) {
+    ++context_.stats.http_not_found;
+    return send(text_response(req, http::status::not_found, "not found\n"));
+  }
+  const auto size = body.size();
+  if (req.method() == http::verb::head) {
+    http::response<http::empty_body> res{http::status::ok, req.version()};
+    res.set(http::field::content_type, bsv(mime_type(*file)));
+    res.content_length(size);
+    res.keep_alive(req.keep_alive());
+    return send(std::move(res));
+  }
+  http::response<http::file_body> res{std::piecewise_construct, std::make_tuple(std::move(body)),
+                                      std::make_tuple(http::status::ok, req.version())};
+  res.set(http::field::server, "matchcast");
+  res.set(http::field::content_type, bsv(mime_type(*file)));
+  res.content_length(size);
+  res.keep_alive(req.keep_alive());
+  send(std::move(res));
+}
+
+template <class Response>
+void HttpSession::send(Response&& res) {
+  using R = std::decay_t<Response>;
+  auto sp = std::make_shared<R>(std::forward<Response>(res));
+  response_ = sp;
+  const bool keep_alive = sp->keep_alive();
+  stream_.expires_after(kRequestTimeout);
+  http::async_write(stream_, *sp,
+                    beast::bind_front_handler(&HttpSession::on_write, shared_from_this(), keep_alive));
+}
+
+void HttpSession::on_write(bool keep_alive, beast::error_code ec, std::size_t) {
+  response_.reset();
+  if (ec) return;
+  if (!keep_alive) {
+    stream_.socket().shutdown(net::ip::tcp::socket::shutdown_send, ec);
+    return;
+  }
+  do_read();
+}
+
+}  // namespace mc::relay

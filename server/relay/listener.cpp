@@ -1,0 +1,61 @@
+#include "server/relay/listener.hpp"
+
+#include <boost/asio/strand.hpp>
+#include <boost/beast/core/bind_handler.hpp>
+
+#include "server/relay/log.hpp"
+
+namespace net = boost::asio;
+namespace beast = boost::beast;
+
+namespace mc::relay {
+
+Listener::Listener(net::io_context& ioc, const HttpContext& context)
+    : ioc_(ioc), acceptor_(net::make_strand(ioc)), context_(context) {}
+
+bool Listener::open(const net::ip::tcp::endpoint& endpoint, std::string& error) {
+  beast::error_code ec;
+  acceptor_.open(endpoint.protocol(), ec);
+  if (!ec) acceptor_.set_option(net::socket_base::reuse_address(true), ec);
+  if (!ec) acceptor_.bind(endpoint, ec);
+  if (!ec) acceptor_.listen(net::socket_base::max_listen_connections, ec);
+  if (ec) {
+    error = "cannot listen on " + endpoint.address().to_string() + ":" +
+            std::to_string(endpoint.port()) + ": " + ec.message();
+    return false;
+  }
+  return true;
+}
+
+std::uint16_t Listener::port() const {
+  beast::error_code ec;
+  auto ep = acceptor_.local_endpoint(ec);
+  return ec ? 0 : ep.port();
+}
+
+void Listener::run() { do_accept(); }
+
+void Listener::close() {
+  net::post(acceptor_.get_executor(), [self = shared_from_this()] {
+    beast::error_code ec;
+    self->acceptor_.close(ec);
+  });
+}
+
+void Listener::do_accept() {
+  acceptor_.async_accept(net::make_strand(ioc_),
+                         beast::bind_front_handler(&Listener::on_accept, shared_from_this()));
+}
+
+void Listener::on_accept(beast::error_code ec, net::ip::tcp::socket socket) {
+  if (ec == net::error::operation_aborted) return;  // closed
+  if (ec) {
+    // Out of file descriptors and similar: log and keep accepting.
+    log_event("accept_failed", ec.message());
+  } else {
+    std::make_shared<HttpSession>(std::move(socket), context_)->run();
+  }
+  do_accept();
+}
+
+}  // namespace mc::relay

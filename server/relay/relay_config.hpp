@@ -1,0 +1,36 @@
+// Everything the relay can be told, as one struct of named limits (after
+// uWebSockets' settings struct). Defaults say why they are what they are.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace mc::relay {
+
+struct RelayConfig {
+  // Loopback by default: exposing a server to a network is a decision.
+  std::string address = "127.0.0.1";
+  // 0 lets the OS pick a free port (tests); the demo uses 8080.
+  std::uint16_t port = 8080;
+  // Static files are served from here and never from outside it.
+  std::string web_root;
+  // Threads running the I/O loop; 0 = one per core.
+  unsigned threads = 0;
+
+  // Per-client outbound queue bound. A pose frame is ~0.3-1.5 KB and a
+  // keyframe interval is 20 frames, so 256 KiB holds several seconds: a client
+  // over it is behind by more than a hiccup, and skips to the next keyframe.
+  std::size_t max_queue_bytes = 256 * 1024;
+  // A client whose write has not completed for this long is stalled, not
+  // slow: it is closed (close code 1008, reason "too slow").
+  std::chrono::milliseconds stall_timeout{5000};
+
+  // Inbound limits: spectators send almost nothing (small JSON controls).
+  std::size_t max_inbound_message = 4096;
+  std::size_t max_http_body = 8192;
+  std::size_t max_clients = 20000;
+};
+
+}  // namespace mc::relay

@@ -1,0 +1,45 @@
+// The bounded outbound queue of one spectator, and its skip-ahead policy.
+// Pure logic, no sockets, so the policy is tested on its own.
+//
+// Policy: while the queued bytes stay under the bound, everything queues.
+// Past it, every queued delta frame is dropped and deltas keep being dropped
+// until the next keyframe, from which the client resyncs. Control messages
+// (hello, events, metadata) are never dropped.
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <vector>
+
+#include "server/relay/message.hpp"
+
+namespace mc::relay {
+
+class SendQueue {
+ public:
+  explicit SendQueue(std::size_t max_bytes) : max_bytes_(max_bytes) {}
+
+  // Queues `m`, applying the skip policy. Returns false when `m` was dropped.
+  bool push(Message m);
+  // Moves every queued message into `batch` (the next write), oldest first.
+  void take_all(std::vector<Message>& batch);
+
+  bool empty() const { return items_.empty(); }
+  std::size_t bytes() const { return bytes_; }
+  std::size_t size() const { return items_.size(); }
+  // Frames dropped so far by the skip policy.
+  std::size_t dropped() const { return dropped_; }
+  // True between an overflow and the keyframe that ends it.
+  bool skipping() const { return skipping_; }
+
+ private:
+  void drop_queued_deltas();
+
+  std::size_t max_bytes_;
+  std::deque<Message> items_;
+  std::size_t bytes_ = 0;
+  std::size_t dropped_ = 0;
+  bool skipping_ = false;
+};
+
+}  // namespace mc::relay

@@ -1,0 +1,62 @@
+// One spectator's WebSocket: joins a channel, then sends it frames through a
+// bounded queue with one write in flight. A slow spectator skips to the next
+// keyframe; a stalled one is closed. Nothing a spectator does can slow the
+// channel: deliver() only posts to this session's strand.
+#pragma once
+
+#include <boost/asio/steady_timer.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+#include <chrono>
+#include <memory>
+#include <vector>
+
+#include "server/relay/channel.hpp"
+#include "server/relay/relay_config.hpp"
+#include "server/relay/relay_stats.hpp"
+#include "server/relay/send_queue.hpp"
+
+namespace mc::relay {
+
+class WebSocketSession : public Subscriber,
+                         public std::enable_shared_from_this<WebSocketSession> {
+ public:
+  WebSocketSession(boost::beast::tcp_stream&& stream, std::shared_ptr<Channel> channel,
+                   const RelayConfig& config, RelayStats& stats);
+  ~WebSocketSession() override;
+
+  // Completes the upgrade for `req` and starts the session.
+  void run(boost::beast::http::request<boost::beast::http::string_body> req);
+
+  // Subscriber: called from the publisher's thread.
+  void deliver(const Message& m) override;
+
+ private:
+  void on_accept(boost::beast::error_code ec);
+  void do_read();
+  void on_read(boost::beast::error_code ec, std::size_t bytes);
+  void enqueue(Message m);
+  void write_next();
+  void on_write(boost::beast::error_code ec, std::size_t bytes);
+  void on_stall_timer(boost::beast::error_code ec);
+  void close_with(boost::beast::websocket::close_code code, const char* reason);
+
+  boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
+  std::shared_ptr<Channel> channel_;
+  const RelayConfig& config_;
+  RelayStats& stats_;
+  boost::beast::flat_buffer in_;
+  SendQueue queue_;
+  std::vector<Message> batch_;  // the write in flight and the rest of its batch
+  std::size_t batch_pos_ = 0;
+  bool writing_ = false;
+  bool open_ = false;
+  bool closing_ = false;
+  boost::asio::steady_timer stall_timer_;
+  // Inbound rate limit: messages in the current one-second window.
+  std::chrono::steady_clock::time_point window_start_{};
+  int window_messages_ = 0;
+};
+
+}  // namespace mc::relay
