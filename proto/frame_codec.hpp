@@ -1,0 +1,80 @@
+// Pose-frame encoder and decoder (SPEC.md is the normative description).
+//
+// A frame is a 26-byte header (proto/frame_header.hpp) and a bit-packed
+// body. Keyframes are self-contained; a delta frame codes each quantized
+// value as the residual of a linear prediction from the two previous frames,
+// with adaptive Rice codes, and flags players whose residuals are all zero.
+// The relay encodes each frame once and sends the same bytes to everyone.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "proto/codec_model.hpp"
+#include "proto/frame_header.hpp"
+#include "proto/pose_frame.hpp"
+#include "proto/quantizer.hpp"
+#include "proto/skeleton.hpp"
+
+namespace mc::proto {
+
+struct EncoderOptions {
+  // Frames between keyframes: 20 = 1 s at 20 Hz. A late joiner or a client
+  // that skipped frames waits at most this long for a picture.
+  int keyframe_interval = 20;
+};
+
+class FrameEncoder {
+ public:
+  explicit FrameEncoder(const SkeletonDef& skeleton, EncoderOptions options = {});
+
+  // Encodes one frame (including frame.server_time_ms; see also
+  // stamp_server_time). It is a keyframe when it is the first frame, when
+  // keyframe_interval frames have passed since the last one, after
+  // force_keyframe(), or when frame.seq is not the previous seq + 1 (a delta
+  // must follow its base directly).
+  std::string encode(const PoseFrame& frame, bool& is_keyframe);
+  void force_keyframe() { force_key_ = true; }
+
+  const Quantizer& quantizer() const { return quant_; }
+
+ private:
+  void write_keyframe(const QuantFrame& q, BitWriter& w);
+  void write_delta(const QuantFrame& q, BitWriter& w);
+
+  Quantizer quant_;
+  EncoderOptions options_;
+  detail::CodecModel model_;
+  bool started_ = false;
+  bool force_key_ = false;
+  int since_key_ = 0;
+  std::uint32_t last_seq_ = 0;
+};
+
+class FrameDecoder {
+ public:
+  explicit FrameDecoder(const SkeletonDef& skeleton);
+
+  // Decodes one frame into `out` (every field of `out` is written). False,
+  // with a one-line `error`, when the bytes are truncated or corrupt, the
+  // major version is unknown, the keyframe was made for another skeleton,
+  // or a delta arrives without its base (no keyframe yet, or a seq gap).
+  // After a false return the decoder waits for the next keyframe; `out` is
+  // then unspecified. Never reads outside `bytes`.
+  bool decode(std::string_view bytes, PoseFrame& out, std::string& error);
+
+  // True once a keyframe was decoded and no gap or error happened since.
+  bool synced() const { return model_.history > 0; }
+  const Quantizer& quantizer() const { return quant_; }
+
+ private:
+  bool read_keyframe(BitReader& r, QuantFrame& q, std::string& error);
+  bool read_delta(BitReader& r, QuantFrame& q, std::string& error);
+
+  Quantizer quant_;
+  detail::CodecModel model_;
+  std::uint32_t last_seq_ = 0;
+};
+
+}  // namespace mc::proto
