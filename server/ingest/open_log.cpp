@@ -2,7 +2,9 @@
 // to the reader for that format.
 #include <functional>
 
+#include "server/ingest/binary_log_source.hpp"
 #include "server/ingest/byte_source.hpp"
+#include "server/ingest/json_log_source.hpp"
 #include "server/ingest/log_format.hpp"
 #include "server/ingest/state_source.hpp"
 #include "server/ingest/text_log_source.hpp"
@@ -44,13 +46,19 @@ std::unique_ptr<StateSource> open_with(const Reopen& reopen, const std::string& 
     case LogFormat::TextV5:
     case LogFormat::TextV6:
       return make_text_log_source(std::move(src));
+    case LogFormat::BinaryV1:
+    case LogFormat::BinaryV2:
+    case LogFormat::BinaryV3:
+      return make_binary_log_source(std::move(src), fmt);
+    case LogFormat::Json17:
+    case LogFormat::Json18:
+    case LogFormat::Json19:
+      return make_json_log_source(std::move(src));
     case LogFormat::Unknown:
-      error = what + ": not a game log (unrecognised first bytes)";
-      return nullptr;
-    default:
-      error = what + ": " + log_format_name(fmt) + " logs are not supported yet";
-      return nullptr;
+      break;
   }
+  error = what + ": not a game log (unrecognised first bytes)";
+  return nullptr;
 }
 
 }  // namespace
