@@ -30,6 +30,8 @@ class BinaryLogSource final : public StateSource {
         const std::string_view body(buf_.data() + 2, kDispInfoSize - 2);
         if (mode == kShow) {
           decode_showinfo_v1(body, out);
+          for (int i = 0; i < kMaxPlayers; ++i)
+            out.players[static_cast<std::size_t>(i)].type = v1_types_[static_cast<std::size_t>(i)];
           play_mode_ = out.play_mode;
           left_ = out.left;
           right_ = out.right;
@@ -129,6 +131,7 @@ class BinaryLogSource final : public StateSource {
       return;
     }
     ev.message.time = last_time_;
+    if (format_ == LogFormat::BinaryV1) apply_change_player_type(ev.message.text, v1_types_);
     ev.next_index = seq_.next_index();
     events_.push(std::move(ev), stats_);
   }
@@ -166,6 +169,7 @@ class BinaryLogSource final : public StateSource {
   std::uint64_t offset_ = 0;
   bool done_ = false;
   int last_time_ = 0;
+  std::array<std::int16_t, kMaxPlayers> v1_types_{};  // v1 shows carry no type
   GameParams params_;
   IngestStats stats_;
   EventQueue events_;

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <numbers>
 
+#include "server/ingest/sexp_cursor.hpp"
 #include "server/ingest/text_show.hpp"
 
 namespace mc::ingest::binary {
@@ -199,6 +200,19 @@ bool decode_msginfo(std::string_view bytes, int& board, std::string& text) {
   if (bytes.size() < 2) return false;
   board = be16(bytes.data());
   text = fixed_string(bytes.data() + 2, bytes.size() - 2);
+  return true;
+}
+
+bool apply_change_player_type(std::string_view text, std::array<std::int16_t, kMaxPlayers>& types) {
+  SexpCursor c(text);
+  std::string_view side;
+  int unum = 0;
+  std::int16_t type = 0;
+  if (!c.lit('(') || !c.keyword("change_player_type") || !c.symbol(side) ||
+      (side != "l" && side != "r") || !c.integer_in(unum, 1, kPlayersPerSide) ||
+      !c.integer_in(type, 0, 1000))
+    return false;
+  types[static_cast<std::size_t>(player_index(side == "l" ? Side::Left : Side::Right, unum))] = type;
   return true;
 }
 

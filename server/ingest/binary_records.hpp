@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -52,5 +53,10 @@ bool decode_player_type(std::string_view bytes, PlayerType& out);
 bool decode_server_params(std::string_view bytes, ParamTable& out);
 // msginfo_t (Int16 board + NUL-padded text).
 bool decode_msginfo(std::string_view bytes, int& board, std::string& text);
+
+// v1 shows carry no player type; the server announces types in
+// `(change_player_type SIDE UNUM TYPE)` messages. Applies one such message to
+// `types` (indexed like WorldState::players); false if `text` is not one.
+bool apply_change_player_type(std::string_view text, std::array<std::int16_t, kMaxPlayers>& types);
 
 }  // namespace mc::ingest::binary

@@ -36,12 +36,13 @@ struct SourceEvent {
     Message,   // a (msg ..) record: team graphic, (result ..), (change_player_type ..)
     FeedLost,  // live feed: no datagram for the timeout, or the server went away
     FeedBack,  // live feed: the server answers again (params may have changed)
+    ServerReply,  // live feed: (ok ..), (error ..), (warning ..) in message.text
   };
   Kind kind = Kind::Message;
   // The index the next state returned by next() will have: the event came
   // after state next_index-1 and before state next_index.
   std::uint64_t next_index = 0;
-  MessageRecord message;  // Kind::Message only
+  MessageRecord message;  // Kind::Message and Kind::ServerReply
   std::string detail;     // FeedLost / FeedBack: human-readable reason
 };
 
