@@ -1,0 +1,326 @@
+// The page: wires the stream to the jitter buffer, and the buffer to the
+// scene, the cameras and the HUD, once per displayed frame.
+//
+// Decoding happens as messages arrive, rendering at the display's rate: a
+// slow GPU renders fewer pictures but every stream frame is still decoded,
+// so the state stays current.
+import { createStage } from './scene/stage.js';
+import { createPitch, normalizeField } from './scene/pitch.js';
+import { Players } from './scene/players.js';
+import { Ball } from './scene/ball.js';
+import { Overlays } from './scene/overlays.js';
+import { makeKit } from './scene/kit.js';
+import { Cameras } from './cameras.js';
+import { Hud } from './hud.js';
+import { KickSound } from './audio.js';
+import { bindControls, markCamera } from './controls.js';
+import { JitterBuffer } from './net/jitter.js';
+import { Stream } from './net/stream.js';
+import { Codec, loadDecoder, readHello } from './net/codec.js';
+import { blendFrames } from './model/interp.js';
+import { EventDetector } from './model/events.js';
+import { STATE } from './model/playmodes.js';
+
+const params = new URLSearchParams(location.search);
+const canvas = document.getElementById('view');
+const stage = createStage(canvas);
+const hud = new Hud();
+const sound = new KickSound();
+const events = new EventDetector();
+const buffer = new JitterBuffer({ delayFrames: Number(params.get('delay') ?? 3) });
+
+let field = normalizeField({});
+let pitch = createPitch(field, stage.renderer);
+stage.scene.add(pitch);
+const ball = new Ball(stage.scene);
+const cameras = new Cameras(stage.camera, canvas, field);
+let players = null;       // built from the hello's skeleton
+let overlays = null;
+let match = null;         // readHello() result
+let codec = null;
+let helloKey = '';
+let selected = null;
+let view = null;          // the interpolated frame on screen
+const toggles = { labels: true, offside: false, reach: false, sound: true, stats: params.has('stats') };
+const counters = { frames: 0, decoded: 0, skipped: 0, decodeErrors: 0, badMessages: 0, hellos: 0,
+  rendered: 0, kicks: 0, banners: 0 };
+let connection = 'connecting';
+
+// --- the match description --------------------------------------------------
+
+function applyHello(msg) {
+  let info;
+  try {
+    info = readHello(msg);
+  } catch (e) {
+    counters.badMessages++;
+    hud.status(`The server's hello is not usable: ${e.message}`, true);
+    return false;
+  }
+  counters.hellos++;
+  const key = JSON.stringify([msg.skeleton, msg.field, msg.left, msg.right, msg.teams]);
+  if (key !== helloKey) {
+    helloKey = key;
+    if (JSON.stringify(info.field) !== JSON.stringify(field)) {
+      field = info.field;
+      stage.scene.remove(pitch);
+      pitch = createPitch(field, stage.renderer);
+      stage.scene.add(pitch);
+      cameras.field = field;
+    }
+    players?.dispose();
+    players = new Players(stage.scene, info.skeleton, info.teams);
+    players.showLabels = toggles.labels;
+    if (overlays) stage.scene.remove(overlays.group);
+    overlays = new Overlays(stage.scene, field, info.params);
+    overlays.showOffside = toggles.offside;
+    overlays.showReach = toggles.reach;
+    const kl = makeKit('left', info.teams.left), kr = makeKit('right', info.teams.right);
+    hud.setTeams({ name: kl.name, css: `#${kl.shirtColor.getHexString()}` },
+      { name: kr.name, css: `#${kr.shirtColor.getHexString()}` });
+  }
+  match = info;
+  if (Number.isFinite(info.params.half_time) && Number.isFinite(info.params.simulator_step))
+    hud.cyclesPerSecond = 1000 / info.params.simulator_step;
+  buffer.frameMs = 1000 / info.frameRate;
+  // A new hello is a new session: frames start again from a keyframe.
+  buffer.reset();
+  events.reset();
+  return true;
+}
+
+function pushFrame(frame) {
+  counters.decoded++;
+  buffer.push(frame, performance.now());
+}
+
+// --- the stream -------------------------------------------------------------
+
+function startStream() {
+  const wsUrl = params.get('ws') ??
+    `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws${params.has('channel') ? `?channel=${encodeURIComponent(params.get('channel'))}` : ''}`;
+  const stream = new Stream(wsUrl, {
+    onStatus(state, info) {
+      connection = state;
+      if (state === 'connecting' && counters.hellos === 0) hud.status('Connecting to the match feed…');
+      else if (state === 'lost') {
+        const s = Math.max(1, Math.round(info.delay / 1000));
+        hud.status(`Feed lost (${info.reason}). Reconnecting in ${s} s…`, true);
+      } else if (state === 'silent') hud.status('The feed has gone quiet. Waiting for data…', true);
+    },
+    async onText(msg) {
+      if (msg.type === 'hello') {
+        let mod;
+        try {
+          mod = await loadDecoder();
+        } catch (e) {
+          hud.status(`The frame decoder could not be loaded: ${e.message}`, true);
+          return;
+        }
+        if (!applyHello(msg)) return;
+        try {
+          codec = new Codec(mod, msg);
+        } catch (e) {
+          codec = null;
+          hud.status(`The frame decoder refused the hello: ${e.message}`, true);
+          return;
+        }
+        stream.healthy();
+        hud.status(null);
+      } else if (msg.type === 'error') {
+        hud.toast(`Server: ${msg.message ?? msg.error ?? 'error'}`);
+      } else {
+        onControl(msg);
+      }
+    },
+    onBinary(buf) {
+      counters.frames++;
+      if (!codec) { counters.skipped++; return; }
+      let frame;
+      try {
+        frame = codec.decode(buf);
+      } catch (e) {
+        counters.decodeErrors++;
+        hud.toast(`Bad frame (${e.message}). Resyncing at the next keyframe.`);
+        return;
+      }
+      if (!frame) { counters.skipped++; return; }
+      if (connection !== 'open') hud.status(null);
+      connection = 'open';
+      pushFrame(frame);
+    },
+    onBadMessage(err) {
+      counters.badMessages++;
+      hud.toast(`Bad message from the server: ${err}`);
+    },
+  });
+  stream.start();
+  return stream;
+}
+
+// Control messages other than the hello (SPEC.md): the recording state, if
+// the relay offers recordings. Unknown types are ignored (newer servers).
+function onControl(msg) {
+  if (msg.type === 'replay' || msg.type === 'recording' || msg.type === 'playback') {
+    const bar = document.getElementById('replay');
+    bar.hidden = false;
+    if (Number.isFinite(msg.position) && Number.isFinite(msg.duration) && msg.duration > 0) {
+      const seek = document.getElementById('rp-seek');
+      if (document.activeElement !== seek) seek.value = String(Math.round(1000 * msg.position / msg.duration));
+    }
+  }
+}
+
+let stream = null;
+if (params.has('fixture')) {
+  const { startFixture } = await import('./dev/fixture.js');
+  startFixture({ onHello: (h) => { applyHello(h); hud.status(null); }, onFrame: (f) => { counters.frames++; pushFrame(f); } });
+  connection = 'open';
+} else {
+  hud.status('Connecting to the match feed…');
+  stream = startStream();
+}
+
+// --- user actions -----------------------------------------------------------
+
+function nearestToBall() {
+  if (!view) return null;
+  let best = null, bd = Infinity;
+  for (const p of view.players) {
+    if (p.state === 0) continue;
+    const d = Math.hypot(p.x - view.ball.x, p.y - view.ball.y);
+    if (d < bd) { bd = d; best = `${p.side}:${p.unum}`; }
+  }
+  return best;
+}
+
+function select(key) {
+  selected = key;
+  if (players) players.selected = key;
+}
+
+const app = {
+  setCamera(id) {
+    if ((id === 'player' || id === 'follow') && !selected) select(nearestToBall());
+    cameras.setMode(id);
+    markCamera(cameras.mode);
+  },
+  cameraMode: () => cameras.mode,
+  toggle(name) {
+    toggles[name] = !toggles[name];
+    if (name === 'labels' && players) players.showLabels = toggles.labels;
+    if (name === 'offside' && overlays) overlays.showOffside = toggles.offside;
+    if (name === 'reach' && overlays) overlays.showReach = toggles.reach;
+    if (name === 'sound') sound.enabled = toggles.sound;
+    if (name === 'stats') hud.showStats(toggles.stats);
+    return toggles[name];
+  },
+  selectAt(ndc) {
+    const key = players?.pick(ndc, stage.camera);
+    if (key) select(key);
+  },
+  cyclePlayer(dir) {
+    if (!view) return;
+    const keys = view.players.filter((p) => p.state !== 0).map((p) => `${p.side}:${p.unum}`);
+    if (!keys.length) return;
+    const i = keys.indexOf(selected);
+    select(keys[(i + dir + keys.length) % keys.length]);
+  },
+  deselect() { select(null); },
+  replay(cmd, arg) {
+    if (document.getElementById('replay').hidden) return;
+    stream?.send({ type: 'replay', command: cmd, value: arg });
+  },
+};
+bindControls(app, canvas);
+markCamera(cameras.mode);
+hud.showStats(toggles.stats);
+for (const [k, v] of Object.entries(toggles)) document.querySelector(`[data-toggle="${k}"]`)?.classList.toggle('on', v);
+
+// --- events at the moment the picture reaches them ---------------------------
+
+function onEvents(list, playhead) {
+  for (const ev of list) {
+    const teamName = (s) => (s === 'l' || s === 1 ? hud.teams?.[1]?.name : hud.teams?.[-1]?.name) ?? '';
+    if (ev.type === 'kick') {
+      counters.kicks++;
+      sound.kick(0.7, Math.max(0, (ev.frame.seq - playhead) * buffer.frameMs / 1000));
+    } else if (ev.type === 'goal') {
+      counters.banners++;
+      hud.banner(`GOAL! ${teamName(ev.side)}  ${ev.frame.scoreLeft}–${ev.frame.scoreRight}`, 'goal', 5000);
+    } else if (ev.type === 'card') {
+      counters.banners++;
+      hud.banner(`${ev.color === 'red' ? 'Red' : 'Yellow'} card: #${ev.player.unum} ${teamName(ev.player.side)}`, `card-${ev.color}`);
+    } else if (ev.type === 'foul') {
+      counters.banners++;
+      // The mode names the team that gets the free kick.
+      hud.banner(`Foul: free kick ${teamName(ev.side)}`, 'foul');
+    }
+  }
+}
+
+// --- the render loop --------------------------------------------------------
+
+let lastNow = performance.now();
+const fpsWindow = [];
+let lastStats = 0, lastBytes = 0, kbps = 0, lastAdapt = performance.now() + 2000;
+
+function frameLoop(now) {
+  requestAnimationFrame(frameLoop);
+  const dt = Math.min(0.1, (now - lastNow) / 1000);
+  lastNow = now;
+  stage.resize();
+  const s = players ? buffer.sample(now) : null;
+  if (s) {
+    view = blendFrames(s.a, s.b, s.t, view);
+    for (const f of s.passed) onEvents(events.step(f), buffer.playhead);
+    players.update(view.players);
+    ball.update(view.ball);
+    const colors = { 1: players.kits[1].shirtColor, [-1]: players.kits[-1].shirtColor };
+    overlays.update(view, colors);
+    hud.update(view);
+    const rig = selected ? players.get(selected) : null;
+    hud.player(rig?.pose ? { side: rig.side, unum: rig.unum, goalie: (rig.pose.state & STATE.GOALIE) !== 0,
+      stamina: rig.pose.stamina, staminaMax: match?.params?.stamina_max } : null);
+  }
+  const hide = cameras.update(dt, { ball: view?.ball ?? { x: 0, y: 0, z: 0 }, players, selected });
+  if (players && players.hiddenKey !== hide) players.hiddenKey = hide;
+  stage.renderer.render(stage.scene, stage.camera);
+  counters.rendered++;
+
+  fpsWindow.push(now);
+  while (fpsWindow.length && fpsWindow[0] < now - 1000) fpsWindow.shift();
+  if (now - lastAdapt > 1000 && !params.has('fixed-quality')) {
+    lastAdapt = now;
+    stage.adapt(fpsWindow.length);
+  }
+  if (now - lastStats > 500) {
+    const bytes = stream?.bytes ?? 0;
+    kbps = ((bytes - lastBytes) * 8) / 1000 / ((now - lastStats) / 1000);
+    lastBytes = bytes;
+    lastStats = now;
+    hud.stats({ fps: fpsWindow.length, kbps, delayMs: view?.serverTimeMs ? Date.now() - view.serverTimeMs : NaN,
+      dropped: buffer.dropped + buffer.late + counters.decodeErrors + counters.skipped });
+  }
+}
+requestAnimationFrame(frameLoop);
+
+// --- a read-only hook for tests and curious users -----------------------------
+
+window.matchcast = Object.freeze({
+  stats: () => ({
+    ...counters, connection, connects: stream?.connects ?? 0, camera: cameras.mode,
+    buffered: buffer.size, dropped: buffer.dropped, late: buffer.late, resyncs: buffer.resyncs,
+    fps: fpsWindow.length, kbps, seq: view?.seq ?? null, time: view?.time ?? null,
+    playMode: view?.playMode ?? null, selected, hello: !!match,
+    teams: match ? [hud.teams[1].name, hud.teams[-1].name] : null,
+    banner: hud.lastBanner ?? null, sounds: sound.played,
+  }),
+  playerPositions: () => (view ? view.players.map((p) => ({ side: p.side, unum: p.unum, state: p.state,
+    x: p.x, y: p.y, z: p.z, heading: p.heading })) : []),
+  ball: () => (view ? { ...view.ball } : null),
+  cameraPosition: () => stage.camera.position.toArray(),
+  setCamera: (id) => app.setCamera(id),
+  select: (key) => select(key),
+  toggle: (name) => app.toggle(name),
+});
