@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# The main job: install what is missing, build, and broadcast the bundled
+# real game (HELIOS_A vs HELIOS_B, rcssserver 19) in a loop. No rcssserver
+# is needed. Prints the URL to open; Ctrl-C stops it.
+#
+#   scripts/demo.sh                  on http://127.0.0.1:8080/
+#   PORT=9000 scripts/demo.sh        another port
+#   scripts/demo.sh --rcg other.rcg.gz --speed 2    any matchcast-server option
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+scripts/build.sh --target matchcast-server
+exec build/server/app/matchcast-server --port "${PORT:-8080}" "$@"

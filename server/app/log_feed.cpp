@@ -1,0 +1,134 @@
+#include "server/app/log_feed.hpp"
+
+#include <chrono>
+#include <vector>
+
+#include "anim/animator.hpp"
+#include "anim/human_skeleton.hpp"
+#include "proto/frame_codec.hpp"
+#include "proto/hello.hpp"
+#include "server/ingest/state_source.hpp"
+#include "server/relay/log.hpp"
+
+namespace mc::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::uint64_t unix_ms() {
+  using namespace std::chrono;
+  return static_cast<std::uint64_t>(
+      duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count());
+}
+
+std::string make_hello(const WorldState& first, const GameParams& params, int keyframe_interval,
+                       const std::string& match_id) {
+  proto::Hello hello;
+  hello.skeleton = anim::human_skeleton();
+  hello.keyframe_interval = keyframe_interval;
+  proto::fill_from_params(params, hello);
+  hello.left.name = first.left.name;
+  hello.right.name = first.right.name;
+  // Broadcast convention: a warm and a cold kit, readable from any camera.
+  hello.left.color = "#d62828";
+  hello.left.color2 = "#ffffff";
+  hello.right.color = "#1d4ed8";
+  hello.right.color2 = "#ffffff";
+  hello.match_id = match_id;
+  return proto::to_json(hello);
+}
+
+}  // namespace
+
+LogFeed::LogFeed(FeedConfig config, std::shared_ptr<relay::Channel> channel)
+    : config_(std::move(config)), channel_(std::move(channel)) {}
+
+LogFeed::~LogFeed() { stop(); }
+
+bool LogFeed::start(std::string& error) {
+  auto source = ingest::open_log(config_.log_path, error);
+  if (!source) return false;
+  WorldState first;
+  if (!source->next(first)) {
+    error = config_.log_path + ": the log holds no game states";
+    return false;
+  }
+  hello_ = make_hello(first, source->params(), config_.keyframe_interval, config_.log_path);
+  channel_->set_hello(hello_);
+  thread_ = std::thread([this] { run(); });
+  return true;
+}
+
+void LogFeed::stop() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  if (thread_.joinable()) thread_.join();
+}
+
+bool LogFeed::wait_until(Clock::time_point deadline) {
+  std::unique_lock lock(mutex_);
+  return !wake_.wait_until(lock, deadline, [this] { return stopping_; });
+}
+
+void LogFeed::run() {
+  do {
+    if (!play_once()) return;
+    relay::log_event("feed_loop", config_.log_path);
+  } while (config_.loop);
+}
+
+bool LogFeed::play_once() {
+  std::string error;
+  auto source = ingest::open_log(config_.log_path, error);
+  if (!source) {
+    relay::log_event("feed_error", error);
+    return wait_until(Clock::now() + std::chrono::seconds(1));
+  }
+  WorldState state;
+  if (!source->next(state)) return wait_until(Clock::now() + std::chrono::seconds(1));
+
+  anim::Animator animator(anim::human_skeleton(), source->params());
+  proto::FrameEncoder encoder(anim::human_skeleton(),
+                              proto::EncoderOptions{config_.keyframe_interval});
+  std::vector<PoseFrame> frames;
+  const auto interval = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double, std::milli>(kFrameIntervalMs / config_.speed));
+  auto deadline = Clock::now();
+
+  auto publish = [&](std::vector<PoseFrame>& batch) {
+    for (PoseFrame& f : batch) {
+      deadline += interval;
+      // After a stall (a suspended process, a slow disk) do not rush to
+      // catch up: resume at the normal pace from now.
+      if (Clock::now() - deadline > std::chrono::seconds(1)) deadline = Clock::now();
+      if (!wait_until(deadline)) return false;
+      // Sequence numbers continue across loops so that clients see no gap.
+      f.seq = next_seq_++;
+      f.server_time_ms = unix_ms();
+      bool key = false;
+      std::string bytes = encoder.encode(f, key);
+      channel_->publish_frame(std::move(bytes), key);
+      ++frames_;
+    }
+    batch.clear();
+    return true;
+  };
+
+  do {
+    animator.push(state, frames);
+    if (!publish(frames)) return false;
+  } while (source->next(state));
+  animator.finish(frames);
+  if (!publish(frames)) return false;
+
+  const auto& stats = source->stats();
+  if (stats.skipped)
+    relay::log_event("feed_skipped_records", std::to_string(stats.skipped) + " skipped in " +
+                                                 config_.log_path);
+  return true;
+}
+
+}  // namespace mc::app

@@ -1,0 +1,62 @@
+// Broadcasts a game log as if it were live: reads the log state by state
+// (streamed, never whole), animates it, encodes each 20 Hz frame once and
+// publishes it to a channel in real time, looping at the end if asked.
+//
+// This is the glue of the pipeline ingest -> anim -> proto -> relay; each
+// stage stays ignorant of the others.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "server/relay/channel.hpp"
+
+namespace mc::app {
+
+struct FeedConfig {
+  std::string log_path;
+  // Playback speed: 1 = real time (10 states, 20 frames per second).
+  double speed = 1.0;
+  // Start again at the end: the demo is a game that never ends.
+  bool loop = true;
+  // Frames between keyframes (1 s at 20 Hz): the longest a joiner or a
+  // skipping client waits for a picture.
+  int keyframe_interval = 20;
+};
+
+class LogFeed {
+ public:
+  LogFeed(FeedConfig config, std::shared_ptr<relay::Channel> channel);
+  ~LogFeed();
+
+  // Opens the log once to check it, publishes the hello, and starts the
+  // playback thread. False with `error` when the log cannot be read.
+  bool start(std::string& error);
+  void stop();
+
+  // Frames published so far (all passes).
+  std::uint64_t frames() const { return frames_.load(); }
+
+ private:
+  void run();
+  // One pass over the log; false when stopped.
+  bool play_once();
+  // Sleeps until `deadline` or stop(); false when stopped.
+  bool wait_until(std::chrono::steady_clock::time_point deadline);
+
+  FeedConfig config_;
+  std::shared_ptr<relay::Channel> channel_;
+  std::thread thread_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stopping_ = false;
+  std::atomic<std::uint64_t> frames_{0};
+  std::uint32_t next_seq_ = 0;
+  std::string hello_;
+};
+
+}  // namespace mc::app

@@ -1,0 +1,85 @@
+#include "server/app/server_options.hpp"
+
+#include <boost/program_options.hpp>
+#include <fstream>
+#include <sstream>
+
+#ifndef MATCHCAST_SOURCE_DIR
+#define MATCHCAST_SOURCE_DIR "."
+#endif
+
+namespace po = boost::program_options;
+
+namespace mc::app {
+
+std::optional<ServerOptions> parse_server_options(int argc, const char* const argv[],
+                                                  std::string& message, int& exit_code) {
+  ServerOptions o;
+  const std::string source_dir = MATCHCAST_SOURCE_DIR;
+  std::string config_file;
+  unsigned max_queue_kb = 0, stall_ms = 0;
+  po::options_description desc(
+      "matchcast-server: broadcast a RoboCup 2D game as a live 3D stream\n\nOptions");
+  // clang-format off
+  desc.add_options()
+    ("help,h", "print this help and exit")
+    ("config", po::value(&config_file), "read options from this file (key = value lines)")
+    ("rcg", po::value(&o.feed.log_path)->default_value(
+        source_dir + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz"),
+        "game log to broadcast (.rcg/.rcg.gz, any version)")
+    ("loop", po::value(&o.feed.loop)->default_value(true), "start the log again at its end (true/false)")
+    ("speed", po::value(&o.feed.speed)->default_value(1.0), "playback speed, 1 = real time")
+    ("keyframe-interval", po::value(&o.feed.keyframe_interval)->default_value(20),
+        "frames between keyframes (20 = 1 s)")
+    ("address", po::value(&o.relay.address)->default_value("127.0.0.1"), "address to listen on")
+    ("port", po::value(&o.relay.port)->default_value(8080), "TCP port, 0 = any free port")
+    ("web", po::value(&o.relay.web_root)->default_value(source_dir + "/web"),
+        "folder of the web page; nothing outside it is served")
+    ("threads", po::value(&o.relay.threads)->default_value(0), "I/O threads, 0 = one per core")
+    ("max-clients", po::value(&o.relay.max_clients)->default_value(o.relay.max_clients),
+        "spectators at once; more are refused with 503")
+    ("max-queue-kb", po::value(&max_queue_kb)->default_value(static_cast<unsigned>(o.relay.max_queue_bytes / 1024)),
+        "per-spectator queue bound; past it the spectator skips to the next keyframe")
+    ("stall-timeout-ms", po::value(&stall_ms)->default_value(static_cast<unsigned>(o.relay.stall_timeout.count())),
+        "a spectator whose write is stuck this long is disconnected")
+    ("max-message-bytes", po::value(&o.relay.max_inbound_message)->default_value(o.relay.max_inbound_message),
+        "largest message a spectator may send");
+  // clang-format on
+  try {
+    po::variables_map vm;
+    po::store(po::parse_command_line(argc, argv, desc), vm);
+    if (vm.count("help")) {
+      std::ostringstream s;
+      s << desc;
+      message = s.str();
+      exit_code = 0;
+      return std::nullopt;
+    }
+    if (vm.count("config")) {
+      const std::string path = vm["config"].as<std::string>();
+      std::ifstream in(path);
+      if (!in) throw po::error("cannot read config file '" + path + "'");
+      po::store(po::parse_config_file(in, desc), vm);
+    }
+    po::notify(vm);
+  } catch (const po::error& e) {
+    message = std::string("matchcast-server: ") + e.what() + "\n(see --help)";
+    exit_code = 2;
+    return std::nullopt;
+  }
+  if (o.feed.speed <= 0 || o.feed.speed > 100) {
+    message = "matchcast-server: --speed must be in (0, 100]";
+    exit_code = 2;
+    return std::nullopt;
+  }
+  if (o.feed.keyframe_interval < 1 || o.feed.keyframe_interval > 1200) {
+    message = "matchcast-server: --keyframe-interval must be in [1, 1200]";
+    exit_code = 2;
+    return std::nullopt;
+  }
+  o.relay.max_queue_bytes = static_cast<std::size_t>(max_queue_kb) * 1024;
+  o.relay.stall_timeout = std::chrono::milliseconds(stall_ms);
+  return o;
+}
+
+}  // namespace mc::app

@@ -1,0 +1,24 @@
+// Command line and config file of matchcast-server. Every option can be
+// given on the command line (--port 8080) or in a config file (port = 8080);
+// the command line wins. README.md lists them all.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "server/app/log_feed.hpp"
+#include "server/relay/relay_config.hpp"
+
+namespace mc::app {
+
+struct ServerOptions {
+  relay::RelayConfig relay;
+  FeedConfig feed;
+};
+
+// Parses argv. Returns nullopt when the program should exit: after --help
+// (exit_code 0, text in `message`) or on an error (exit_code 2, message).
+std::optional<ServerOptions> parse_server_options(int argc, const char* const argv[],
+                                                  std::string& message, int& exit_code);
+
+}  // namespace mc::app

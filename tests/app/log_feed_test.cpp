@@ -1,0 +1,99 @@
+// The whole pipeline in-process: a real log through ingest, anim and the
+// codec into a channel; a subscriber decodes what a spectator would get.
+#include "server/app/log_feed.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <thread>
+
+#include "anim/human_skeleton.hpp"
+#include "proto/frame_codec.hpp"
+#include "proto/hello.hpp"
+
+namespace mc::app {
+namespace {
+
+const std::string kLog = std::string(MATCHCAST_SOURCE_DIR) +
+                         "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
+
+struct Collector : relay::Subscriber {
+  std::mutex mutex;
+  std::vector<relay::Message> messages;
+  void deliver(const relay::Message& m) override {
+    std::lock_guard lock(mutex);
+    messages.push_back(m);
+  }
+  std::size_t count() {
+    std::lock_guard lock(mutex);
+    return messages.size();
+  }
+};
+
+TEST(LogFeed, PublishesDecodableContinuousFramesOfTheRealGame) {
+  auto channel = std::make_shared<relay::Channel>("test");
+  FeedConfig config;
+  config.log_path = kLog;
+  config.speed = 20;  // 400 frames per second
+  LogFeed feed(config, channel);
+  std::string error;
+  ASSERT_TRUE(feed.start(error)) << error;
+  auto collector = std::make_shared<Collector>();
+  auto first = channel->join(collector);
+  ASSERT_FALSE(first.empty());
+  for (int i = 0; i < 300 && collector->count() < 200; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  feed.stop();
+
+  proto::Hello hello;
+  ASSERT_TRUE(proto::hello_from_json(*first[0].bytes, hello, error)) << error;
+  EXPECT_EQ(hello.left.name, "HELIOS_A");
+  EXPECT_EQ(hello.right.name, "HELIOS_B");
+  EXPECT_EQ(hello.skeleton.joints.size(), anim::human_skeleton().joints.size());
+
+  std::vector<relay::Message> frames(first.begin() + 1, first.end());
+  {
+    std::lock_guard lock(collector->mutex);
+    frames.insert(frames.end(), collector->messages.begin(), collector->messages.end());
+  }
+  ASSERT_GE(frames.size(), 200u);
+  proto::FrameDecoder decoder(hello.skeleton);
+  PoseFrame f, start;
+  std::uint32_t last_seq = 0;
+  bool have = false;
+  for (const auto& m : frames) {
+    ASSERT_TRUE(m.binary());
+    ASSERT_TRUE(decoder.decode(*m.bytes, f, error)) << error;
+    if (have) ASSERT_EQ(f.seq, last_seq + 1) << "gap in the stream";
+    if (!have) start = f;
+    last_seq = f.seq;
+    have = true;
+    EXPECT_GT(f.server_time_ms, 0u);
+  }
+  // Ten seconds of play: some players must have moved.
+  int moved = 0;
+  for (int i = 0; i < kMaxPlayers; ++i)
+    if (std::hypot(f.players[i].x - start.players[i].x, f.players[i].y - start.players[i].y) > 0.5)
+      ++moved;
+  EXPECT_GE(moved, 5);
+}
+
+TEST(LogFeed, RefusesAMissingOrEmptyLogWithAClearError) {
+  auto channel = std::make_shared<relay::Channel>("test");
+  FeedConfig config;
+  config.log_path = "/nonexistent/game.rcg";
+  LogFeed feed(config, channel);
+  std::string error;
+  EXPECT_FALSE(feed.start(error));
+  EXPECT_NE(error.find("/nonexistent/game.rcg"), std::string::npos) << error;
+
+  config.log_path = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/real/20190926071807-HELIOS_base_0-vs-null.rcg";
+  LogFeed empty(config, channel);
+  EXPECT_FALSE(empty.start(error));
+  EXPECT_NE(error.find("no game states"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace mc::app
