@@ -36,6 +36,11 @@ void MonitorStream::queue_message(SourceEvent::Kind kind) {
   events_.push(std::move(ev), stats_);
 }
 
+void MonitorStream::refuse_oversized(std::size_t size) {
+  const std::uint64_t n = datagrams_++;
+  record_skip(stats_, "datagram " + std::to_string(n) + ": oversized datagram (" + std::to_string(size) + " bytes)");
+}
+
 void MonitorStream::push_event(SourceEvent::Kind kind, std::string detail) {
   SourceEvent ev;
   ev.kind = kind;

@@ -19,6 +19,8 @@ class MonitorStream {
   // index and stoppage stamped; false otherwise (params, message, reply, or
   // a bad datagram counted in stats() as "datagram N: why").
   bool push(std::string_view datagram, WorldState& out);
+  // Counts a datagram refused unread (larger than the receive buffer).
+  void refuse_oversized(std::size_t size);
   // Queues a feed event (lost/back) before the next state.
   void push_event(SourceEvent::Kind kind, std::string detail);
   bool poll_event(SourceEvent& out) { return events_.pop(out); }
