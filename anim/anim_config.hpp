@@ -1,0 +1,32 @@
+// Settings of an Animator, one struct with defaults that say why.
+#pragma once
+
+#include <cstdint>
+
+namespace mc::anim {
+
+// Levels of animation detail of the Virtual RoboCup perception study
+// (section 6): what is animated, selectable per stream.
+enum class DetailLevel : std::uint8_t {
+  None = 0,  // players glide in a standing pose: no running, no kicking
+  Run = 1,   // locomotion only; kicks, tackles and catches are not shown
+  Kick = 2,  // kicks, tackles and catches only; players glide standing otherwise
+  Full = 3,  // everything
+};
+
+struct AnimConfig {
+  // Following 10 Hz states an output frame waits for. Two is the paper's
+  // choice: it classifies and smooths with two following cycles and gives a
+  // kick 0.15 s of preparation. At least 1 (a half-way frame needs the next
+  // state); larger values lengthen the kick preparation and the latency
+  // (each cycle adds 100 ms).
+  int lookahead_cycles = 2;
+  DetailLevel detail = DetailLevel::Full;
+  // Human cadence ceiling (steps/s): at higher speed the stride grows instead.
+  float cadence_cap = 4.2f;
+  // Cycles on each side of a cycle over which the body heading is averaged
+  // (zig-zags and pirouettes are softened); capped by the look-ahead.
+  int heading_half_window = 2;
+};
+
+}  // namespace mc::anim

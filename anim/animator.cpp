@@ -1,0 +1,207 @@
+#include "anim/animator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "anim/body_frame.hpp"
+#include "anim/player_animation.hpp"
+
+namespace mc::anim {
+namespace {
+
+float lerpf(double a, double b, float t) { return static_cast<float>(a + (b - a) * t); }
+
+}  // namespace
+
+Animator::Animator(const SkeletonDef& skeleton, const GameParams& params, AnimConfig config)
+    : skeleton_(skeleton), params_(params), config_(config),
+      players_(std::make_unique<std::array<PlayerAnim, kMaxPlayers>>()) {
+  config_.lookahead_cycles = std::clamp(config_.lookahead_cycles, 1, 50);
+  config_.heading_half_window = std::clamp(config_.heading_half_window, 0, 10);
+  // Past cycles needed: heading window, and the raw decision of the previous
+  // cycle (which looks one further back).
+  ring_.resize(static_cast<std::size_t>(config_.lookahead_cycles + config_.heading_half_window + 4));
+}
+
+Animator::~Animator() = default;
+
+const WorldState& Animator::state_at(std::uint64_t pos) const {
+  // Callers clamp pos into [pushed_ - ring size, pushed_).
+  return ring_[pos % ring_.size()];
+}
+
+Action Animator::last_action(int slot) const {
+  if (slot < 0 || slot >= kMaxPlayers) return Action::Stand;
+  return (*players_)[static_cast<std::size_t>(slot)].action;
+}
+
+Action Animator::raw_action(std::uint64_t pos, int slot) const {
+  const std::uint64_t oldest = pushed_ > ring_.size() ? pushed_ - ring_.size() : 0;
+  const auto i = static_cast<std::size_t>(slot);
+  const WorldState& cur = state_at(pos);
+  ClassifyInput in;
+  in.cur = &cur.players[i];
+  in.prev = pos > oldest ? &state_at(pos - 1).players[i] : nullptr;
+  in.next = pos + 1 < pushed_ ? &state_at(pos + 1).players[i] : nullptr;
+  in.ball = &cur.ball;
+  in.type = &params_.type(cur.players[i].type);
+  return classify_raw(in);
+}
+
+Action Animator::action_at(std::uint64_t pos, int slot) const {
+  std::array<Action, 3> w{};
+  std::size_t n = 0, centre = 0;
+  const std::uint64_t oldest = pushed_ > ring_.size() ? pushed_ - ring_.size() : 0;
+  if (pos > oldest + 1) w[n++] = raw_action(pos - 1, slot);  // raw(pos-1) looks at pos-2
+  centre = n;
+  w[n++] = raw_action(pos, slot);
+  if (pos + 1 < pushed_) w[n++] = raw_action(pos + 1, slot);
+  return smooth_action(std::span<const Action>(w.data(), n), centre);
+}
+
+float Animator::smoothed_heading(std::uint64_t pos, int slot) const {
+  const auto i = static_cast<std::size_t>(slot);
+  const PlayerState& c = state_at(pos).players[i];
+  const int w = config_.heading_half_window;
+  // The future side stops one cycle short of the look-ahead so that the
+  // heading of the next cycle is final when a half-way frame needs it.
+  const int ahead = std::min(w, config_.lookahead_cycles - 1);
+  const std::uint64_t oldest = pushed_ > ring_.size() ? pushed_ - ring_.size() : 0;
+  double sx = 0, sy = 0;
+  for (int k = -w; k <= ahead; ++k) {
+    if (k < 0 && pos < oldest + static_cast<std::uint64_t>(-k)) continue;
+    const std::uint64_t j = pos + static_cast<std::uint64_t>(static_cast<std::int64_t>(k));
+    if (j >= pushed_) continue;
+    const PlayerState& p = state_at(j).players[i];
+    if (p.active() != c.active()) continue;
+    const double wt = w + 1 - std::abs(k);
+    sx += wt * std::cos(p.body * kDeg);
+    sy += wt * std::sin(p.body * kDeg);
+  }
+  // Opposite headings cancel: fall back to the cycle's own heading.
+  if (std::hypot(sx, sy) < 0.25) return static_cast<float>(c.body);
+  return static_cast<float>(std::atan2(sy, sx) / kDeg);
+}
+
+void Animator::push(const WorldState& state, std::vector<PoseFrame>& out, std::vector<AnimEvent>* events) {
+  ring_[pushed_ % ring_.size()] = state;
+  ++pushed_;
+  while (emitted_ + static_cast<std::uint64_t>(config_.lookahead_cycles) < pushed_)
+    emit_cycle(emitted_++, out, events);
+}
+
+void Animator::finish(std::vector<PoseFrame>& out, std::vector<AnimEvent>* events) {
+  while (emitted_ < pushed_) emit_cycle(emitted_++, out, events);
+}
+
+void Animator::emit_events(std::uint64_t pos, std::vector<AnimEvent>& events) const {
+  const std::uint64_t oldest = pushed_ > ring_.size() ? pushed_ - ring_.size() : 0;
+  if (pos <= oldest) return;
+  const WorldState& a = state_at(pos);
+  const WorldState& p = state_at(pos - 1);
+  AnimEvent base;
+  base.seq = static_cast<std::uint32_t>(2 * a.index);
+  base.time = a.time;
+  base.play_mode = a.play_mode;
+  base.score_left = static_cast<std::uint8_t>(a.left.score);
+  base.score_right = static_cast<std::uint8_t>(a.right.score);
+  if (a.play_mode != p.play_mode) {
+    AnimEvent e = base;
+    e.type = AnimEventType::PlayMode;
+    events.push_back(e);
+  }
+  if (a.left.score > p.left.score || a.right.score > p.right.score) {
+    AnimEvent e = base;
+    e.type = AnimEventType::Goal;
+    e.side = a.left.score > p.left.score ? Side::Left : Side::Right;
+    events.push_back(e);
+  }
+  for (std::size_t i = 0; i < a.players.size(); ++i) {
+    const std::uint32_t now = a.players[i].state, before = p.players[i].state;
+    Card card = Card::None;
+    if ((now & state_bits::kRedCard) && !(before & state_bits::kRedCard)) card = Card::Red;
+    else if ((now & state_bits::kYellowCard) && !(before & state_bits::kYellowCard)) card = Card::Yellow;
+    if (card == Card::None) continue;
+    AnimEvent e = base;
+    e.type = AnimEventType::Card;
+    e.side = a.players[i].side;
+    e.unum = a.players[i].unum;
+    e.card = card;
+    events.push_back(e);
+  }
+}
+
+void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::vector<AnimEvent>* events) {
+  const WorldState& a = state_at(pos);
+  const bool has_next = pos + 1 < pushed_;
+  const WorldState& b = has_next ? state_at(pos + 1) : a;
+  const std::uint64_t oldest = pushed_ > ring_.size() ? pushed_ - ring_.size() : 0;
+  const double stamina_max = params_.server.number("stamina_max", 8000);
+  const float ball_r = static_cast<float>(params_.ball_size());
+  const DetailLevel detail = config_.detail;
+  const bool loco_on = detail == DetailLevel::Run || detail == DetailLevel::Full;
+  LocomotionParams lp;
+  lp.cadence_cap = config_.cadence_cap;
+
+  std::array<Action, kMaxPlayers> act{};
+  std::array<bool, kMaxPlayers> hold{};
+  std::array<float, kMaxPlayers> h0{}, h1{};
+  for (int i = 0; i < kMaxPlayers; ++i) {
+    act[static_cast<std::size_t>(i)] = action_at(pos, i);
+    const Action next = has_next ? raw_action(pos + 1, i) : Action::Stand;
+    hold[static_cast<std::size_t>(i)] = !has_next || next == Action::Teleport ||
+                                        !b.players[static_cast<std::size_t>(i)].active();
+    h0[static_cast<std::size_t>(i)] = smoothed_heading(pos, i);
+    h1[static_cast<std::size_t>(i)] = hold[static_cast<std::size_t>(i)] ? h0[static_cast<std::size_t>(i)]
+                                                                         : smoothed_heading(pos + 1, i);
+  }
+  if (events != nullptr) emit_events(pos, *events);
+
+  for (int sub = 0; sub < kFramesPerCycle; ++sub) {
+    const float t = 0.5f * static_cast<float>(sub);
+    PoseFrame& f = out.emplace_back();
+    f.seq = static_cast<std::uint32_t>(2 * a.index + static_cast<std::uint64_t>(sub));
+    f.time = a.time;
+    f.stoppage = a.stoppage;
+    f.substep = static_cast<std::uint8_t>(sub);
+    f.server_time_ms = 0;
+    f.play_mode = a.play_mode;
+    f.score_left = static_cast<std::uint8_t>(std::clamp(a.left.score, 0, 255));
+    f.score_right = static_cast<std::uint8_t>(std::clamp(a.right.score, 0, 255));
+    f.ball.x = lerpf(a.ball.x, b.ball.x, t);
+    f.ball.y = lerpf(a.ball.y, b.ball.y, t);
+    f.ball.z = ball_r;
+    for (std::size_t i = 0; i < kMaxPlayers; ++i) {
+      const PlayerState& pa = a.players[i];
+      const PlayerState& pb = b.players[i];
+      PlayerAnim& ctx = (*players_)[i];
+      PlayerPose& pose = f.players[i];
+      pose.side = pa.side;
+      pose.unum = pa.unum;
+      pose.state = pa.state;
+      const float ti = hold[i] ? 0.0f : t;
+      PlayerFrameInput in;
+      in.x = lerpf(pa.x, pb.x, ti);
+      in.y = lerpf(pa.y, pb.y, ti);
+      in.heading = lerp_deg(h0[i], h1[i], ti);
+      in.gaze = lerp_deg(static_cast<float>(pa.body + pa.neck), static_cast<float>(pb.body + pb.neck), ti);
+      if (!hold[i] && (pb.x != pa.x || pb.y != pa.y)) {
+        in.move_dx = static_cast<float>(pb.x - pa.x);
+        in.move_dy = static_cast<float>(pb.y - pa.y);
+      } else if (pos > oldest) {
+        const PlayerState& pp = state_at(pos - 1).players[i];
+        in.move_dx = static_cast<float>(pa.x - pp.x);
+        in.move_dy = static_cast<float>(pa.y - pp.y);
+      }
+      in.action = act[i];
+      in.stamina = static_cast<float>(std::clamp(pa.stamina / stamina_max, 0.0, 1.0));
+      in.reset = (sub == 0 && act[i] == Action::Teleport) || !pa.active() || !ctx.was_active;
+      in.animate_locomotion = loco_on && pa.active();
+      in.dt = 0.001f * static_cast<float>(params_.simulator_step_ms()) / kFramesPerCycle;
+      animate_player(ctx, in, lp, skeleton_, pose);
+      ctx.was_active = pa.active();
+    }
+  }
+}
+
+}  // namespace mc::anim

@@ -1,0 +1,76 @@
+// The animator: 10 Hz 2D world states in, 20 Hz 3D pose frames out.
+//
+// It is a pure function of the states pushed so far and of the settings:
+// the animation never waits for rendering, and equal input gives byte-equal
+// output. Each state is held back until `lookahead_cycles` following states
+// have arrived (the paper's delayed timeline), then its two frames leave:
+// substep 0 exactly at the cycle (the root lies on the 2D position), substep
+// 1 half-way to the next cycle (the root interpolated; a kick's contact falls
+// here, see kick_planner.hpp).
+//
+// Frames leave with server_time_ms = 0; the relay stamps it. Player poses
+// follow human_skeleton.hpp's placement convention: x, y in field metres, z
+// the pelvis height, heading in field degrees, angles per the skeleton.
+//
+// Memory: the constructor sizes every buffer; push() and finish() allocate
+// only when the caller's output vectors grow.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "anim/anim_config.hpp"
+#include "anim/anim_events.hpp"
+#include "anim/classifier.hpp"
+#include "proto/game_params.hpp"
+#include "proto/pose_frame.hpp"
+#include "proto/skeleton.hpp"
+#include "proto/world_state.hpp"
+
+namespace mc::anim {
+
+struct PlayerAnim;  // per-player animation context (player_animation.hpp)
+
+class Animator {
+ public:
+  // `skeleton` must be human_skeleton() (the motion code knows its joints) and
+  // outlive the animator. lookahead_cycles below 1 is raised to 1.
+  Animator(const SkeletonDef& skeleton, const GameParams& params, AnimConfig config = {});
+  ~Animator();
+  Animator(const Animator&) = delete;
+  Animator& operator=(const Animator&) = delete;
+
+  // Feed the next 10 Hz state in stream order. Appends the 20 Hz frames that
+  // became final (two per state once the look-ahead is filled), and, when
+  // `events` is given, the events of those frames.
+  void push(const WorldState& state, std::vector<PoseFrame>& out,
+            std::vector<AnimEvent>* events = nullptr);
+  // End of input: appends the frames still held back by the look-ahead (two
+  // per state; the last state's half-way frame holds still).
+  void finish(std::vector<PoseFrame>& out, std::vector<AnimEvent>* events = nullptr);
+
+  const AnimConfig& config() const { return config_; }
+  // The smoothed decision for one player at the last emitted cycle (for
+  // tools and tests); Stand before any frame left.
+  Action last_action(int player_slot) const;
+
+ private:
+  const WorldState& state_at(std::uint64_t pos) const;
+  Action raw_action(std::uint64_t pos, int slot) const;
+  Action action_at(std::uint64_t pos, int slot) const;
+  float smoothed_heading(std::uint64_t pos, int slot) const;
+  void emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::vector<AnimEvent>* events);
+  void emit_events(std::uint64_t pos, std::vector<AnimEvent>& events) const;
+
+  const SkeletonDef& skeleton_;
+  GameParams params_;
+  AnimConfig config_;
+  std::vector<WorldState> ring_;  // the last ring_.size() states, by stream position
+  std::uint64_t pushed_ = 0;      // states received
+  std::uint64_t emitted_ = 0;     // cycles whose frames have left
+  std::unique_ptr<std::array<PlayerAnim, kMaxPlayers>> players_;
+};
+
+}  // namespace mc::anim

@@ -1,0 +1,67 @@
+// Small helpers between field space and a player's body space.
+//
+// Field space: rcssserver's (x, y) in metres, angles in degrees from +x
+// towards +y, plus a height h above the grass. Body space (model space,
+// proto/skeleton.hpp): X forward along the heading, Y up, Z to the right.
+// Because the field's +y side is the right of a player facing +x, a field
+// angle a maps to the body yaw -a (the body's yaw grows to the left).
+#pragma once
+
+#include <cmath>
+
+namespace mc::anim {
+
+inline constexpr float kPi = 3.14159265358979f;
+inline constexpr float kDeg = kPi / 180.0f;
+
+// Angle wrapped into [-180, 180).
+inline float wrap_deg(float a) {
+  a = std::fmod(a + 180.0f, 360.0f);
+  if (a < 0) a += 360.0f;
+  return a - 180.0f;
+}
+
+// Shortest signed difference a - b, degrees.
+inline float delta_deg(float a, float b) { return wrap_deg(a - b); }
+
+// Interpolates angles along the shorter arc.
+inline float lerp_deg(float a, float b, float t) { return wrap_deg(a + delta_deg(b, a) * t); }
+
+inline float clampf(float v, float lo, float hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+inline float smoothstep(float t) {
+  t = clampf(t, 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// A player's body frame on the field: origin under the pelvis, heading in
+// field degrees.
+struct BodyFrame {
+  float x = 0, y = 0;      // field m
+  float heading = 0;       // field deg
+  float c = 1, s = 0;      // cos/sin of heading
+
+  BodyFrame() = default;
+  BodyFrame(float px, float py, float heading_deg)
+      : x(px), y(py), heading(heading_deg), c(std::cos(heading_deg * kDeg)),
+        s(std::sin(heading_deg * kDeg)) {}
+
+  // Field point (fx, fy) -> body (forward X, right Z).
+  void to_body(float fx, float fy, float& bx, float& bz) const {
+    const float dx = fx - x, dy = fy - y;
+    bx = dx * c + dy * s;
+    bz = -dx * s + dy * c;
+  }
+  // Body (forward X, right Z) -> field point.
+  void to_field(float bx, float bz, float& fx, float& fy) const {
+    fx = x + bx * c - bz * s;
+    fy = y + bx * s + bz * c;
+  }
+  // Field direction (dx, dy) -> body direction.
+  void dir_to_body(float dx, float dy, float& bx, float& bz) const {
+    bx = dx * c + dy * s;
+    bz = -dx * s + dy * c;
+  }
+};
+
+}  // namespace mc::anim

@@ -1,0 +1,71 @@
+#include "anim/leg_pose_job.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "anim/body_frame.hpp"
+#include "anim/human_skeleton.hpp"
+#include "anim/local_to_model_job.hpp"
+#include "anim/two_bone_ik_job.hpp"
+
+namespace mc::anim {
+namespace {
+
+const std::string kYzx = "yzx", kZxy = "zxy", kZ = "z";
+
+// Wanted sole orientation in body space: yaw about Y, then pitch about Z.
+glm::mat3 sole_rotation(float yaw_deg, float pitch_deg) {
+  const float a[2] = {yaw_deg, pitch_deg};
+  return joint_rotation("yz", a);
+}
+
+}  // namespace
+
+bool LegPoseJob::Validate() const { return angles.size() >= static_cast<std::size_t>(dof::kCount); }
+
+bool LegPoseJob::Run() {
+  if (!Validate()) return false;
+  const glm::mat3 pelvis = joint_rotation(kYzx, &angles[dof::kPelvis]);
+  const glm::mat3 pelvis_inv = glm::transpose(pelvis);
+  const glm::vec3 pelvis_pos(0.0f, pelvis_height, 0.0f);
+  for (int side = 0; side < 2; ++side) {
+    const FootTarget& f = feet[side];
+    const int hip = side == 0 ? dof::kRHip : dof::kLHip;
+    const int knee = side == 0 ? dof::kRKnee : dof::kLKnee;
+    const int ankle = side == 0 ? dof::kRAnkle : dof::kLAnkle;
+    const glm::vec3 hip_ls(0.0f, -dims::kHipDrop, side == 0 ? dims::kHipHalfWidth : -dims::kHipHalfWidth);
+    const glm::vec3 target_ls =
+        pelvis_inv * (glm::vec3(f.ankle_ms[0], f.ankle_ms[1], f.ankle_ms[2]) - pelvis_pos) - hip_ls;
+    // Knee direction: the sole's yaw relative to the pelvis, within the hip's twist range.
+    const float pelvis_yaw = angles[dof::kPelvis];
+    const float twist = clampf(wrap_deg(f.yaw_deg - pelvis_yaw), -40.0f, 40.0f);
+    TwoBoneIKJob ik;
+    ik.upper_length = dims::kThigh;
+    ik.lower_length = dims::kShin;
+    ik.target[0] = target_ls.x;
+    ik.target[1] = target_ls.y;
+    ik.target[2] = target_ls.z;
+    ik.hinge_sign = -1;
+    ik.twist_deg = twist;
+    ik.start_zxy = &angles[hip];
+    ik.hinge_z = &angles[knee];
+    ik.reached = &reached[side];
+    ik.Run();
+    // Ankle: the rotation left between the shin and the wanted sole, as Z then X.
+    const glm::mat3 shin = pelvis * joint_rotation(kZxy, &angles[hip]) * joint_rotation(kZ, &angles[knee]);
+    const glm::mat3 local = glm::transpose(shin) * sole_rotation(f.yaw_deg, f.pitch_deg);
+    const glm::vec3 fwd = local[0];   // where the sole's +X points, in shin space
+    const float az = std::atan2(fwd.y, fwd.x) / kDeg;
+    const float rz[1] = {-az};
+    const glm::vec3 right = joint_rotation(kZ, rz) * local[2];  // sole's +Z after undoing az
+    const float ax = std::atan2(-right.y, right.z) / kDeg;
+    angles[ankle] = clampf(az, -60.0f, 35.0f);
+    angles[ankle + 1] = clampf(ax, -30.0f, 30.0f);
+  }
+  return true;
+}
+
+}  // namespace mc::anim

@@ -1,0 +1,30 @@
+// Places both feet: ankle targets in body space -> hip, knee and ankle angles
+// of human_skeleton(), by closed-form two-bone IK (two_bone_ik_job.hpp) and
+// an ankle that keeps the sole at the wanted orientation.
+//
+// Requires the pelvis dofs (yaw, pitch, roll) and the pelvis height to be
+// chosen already: the hips move with the pelvis.
+#pragma once
+
+#include <span>
+
+namespace mc::anim {
+
+struct FootTarget {
+  float ankle_ms[3] = {0, 0, 0};  // ankle joint, body (model) space, m; [1] is height
+  float yaw_deg = 0;              // sole yaw in body space (+ = toes turned left)
+  float pitch_deg = 0;            // sole pitch (+ = toes up)
+};
+
+struct LegPoseJob {
+  float pelvis_height = 1.0f;    // in: pelvis joint height above the grass (m)
+  FootTarget feet[2];            // in: [0] right, [1] left
+  std::span<float> angles;       // in/out: pelvis dofs read, leg dofs written (deg)
+  bool reached[2] = {true, true};  // out: false when a target was clamped to reach
+
+  // False when `angles` is shorter than the human skeleton's dof count.
+  bool Validate() const;
+  bool Run();
+};
+
+}  // namespace mc::anim

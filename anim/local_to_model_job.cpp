@@ -1,0 +1,61 @@
+#include "anim/local_to_model_job.hpp"
+
+#include <cmath>
+
+namespace mc::anim {
+namespace {
+
+constexpr float kDegToRad = 0.017453292519943295f;
+
+// Elementary rotation about one body axis (column-major glm).
+glm::mat3 axis_rotation(char axis, float deg) {
+  const float r = deg * kDegToRad;
+  const float c = std::cos(r), s = std::sin(r);
+  glm::mat3 m(1.0f);
+  switch (axis) {
+    case 'x': m[1][1] = c; m[1][2] = s; m[2][1] = -s; m[2][2] = c; break;
+    case 'y': m[0][0] = c; m[0][2] = -s; m[2][0] = s; m[2][2] = c; break;
+    default: m[0][0] = c; m[0][1] = s; m[1][0] = -s; m[1][1] = c; break;
+  }
+  return m;
+}
+
+}  // namespace
+
+glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
+  glm::mat3 r(1.0f);
+  for (std::size_t i = 0; i < dofs.size(); ++i) r = r * axis_rotation(dofs[i], deg[i]);
+  return r;
+}
+
+bool LocalToModelJob::Validate() const {
+  if (skeleton == nullptr) return false;
+  const auto& joints = skeleton->joints;
+  if (models.size() < joints.size()) return false;
+  if (angles_deg.size() < static_cast<std::size_t>(skeleton->dof_count())) return false;
+  for (std::size_t i = 0; i < joints.size(); ++i)
+    if (joints[i].parent >= static_cast<int>(i) || (i > 0 && joints[i].parent < 0)) return false;
+  return true;
+}
+
+bool LocalToModelJob::Run() const {
+  if (!Validate()) return false;
+  const auto& joints = skeleton->joints;
+  const float* a = angles_deg.data();
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    const JointDef& j = joints[i];
+    const glm::mat3 r = joint_rotation(j.dofs, a);
+    a += j.dofs.size();
+    glm::mat4 local(r);
+    local[3] = glm::vec4(j.offset_ls[0], j.offset_ls[1], j.offset_ls[2], 1.0f);
+    if (j.parent < 0) {
+      local[3] += glm::vec4(root_ms, 0.0f);
+      models[i] = local;
+    } else {
+      models[i] = models[static_cast<std::size_t>(j.parent)] * local;
+    }
+  }
+  return true;
+}
+
+}  // namespace mc::anim

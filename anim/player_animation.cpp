@@ -1,0 +1,86 @@
+#include "anim/player_animation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "anim/body_frame.hpp"
+#include "anim/human_skeleton.hpp"
+#include "anim/leg_pose_job.hpp"
+
+namespace mc::anim {
+
+int clamp_to_limits(const SkeletonDef& skeleton, std::span<float> angles) {
+  int out = 0;
+  std::size_t k = 0;
+  for (const JointDef& j : skeleton.joints) {
+    for (std::size_t d = 0; d < j.dofs.size() && k < angles.size(); ++d, ++k) {
+      const float lo = j.limits[d][0], hi = j.limits[d][1];
+      if (angles[k] < lo) { angles[k] = lo; ++out; }
+      else if (angles[k] > hi) { angles[k] = hi; ++out; }
+    }
+  }
+  return out;
+}
+
+void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const LocomotionParams& lp,
+                    const SkeletonDef& limits_from, PlayerPose& out) {
+  const bool rest = !in.animate_locomotion || in.action == Action::Stand ||
+                    in.action == Action::Turn || in.action == Action::Disconnected;
+  LocomotionInput li;
+  li.x = in.x; li.y = in.y; li.heading = in.heading; li.dt = in.dt;
+  li.move_dx = in.move_dx; li.move_dy = in.move_dy;
+  li.rest = rest;
+  li.stamina = in.stamina;
+  li.reset = in.reset || !in.animate_locomotion;
+  LocomotionOutput lo;
+  step_locomotion(ctx.loco, li, lp, lo);
+  ctx.action = in.action;
+
+  std::span<float> a(out.angles.data(), static_cast<std::size_t>(dof::kCount));
+  std::fill(out.angles.begin(), out.angles.end(), 0.0f);
+  const GaitSample& g = lo.sample;
+  const float amp = lo.amplitude, run = lo.run;
+  const float fresh = clampf(in.stamina, 0.0f, 1.0f);
+  // A tired player runs more upright (less forward lean).
+  const float lean = (2.0f + 9.0f * run) * amp * (0.45f + 0.55f * fresh);
+  const float back = in.action == Action::Backpedal ? 1.0f : 0.0f;
+
+  a[dof::kPelvis + 0] = g.pelvis_twist * (4.0f + 4.0f * run) * amp;
+  a[dof::kPelvis + 1] = -0.4f * lean + 4.0f * back;
+  a[dof::kPelvis + 2] = g.pelvis_roll * 3.0f * amp;
+  a[dof::kTorso + 0] = g.torso_twist * (5.0f + 7.0f * run) * amp - a[dof::kPelvis + 0];
+  a[dof::kTorso + 1] = -0.6f * lean + 6.0f * back;
+  a[dof::kTorso + 2] = -a[dof::kPelvis + 2];
+
+  // Arms swing against the legs; elbows bend more as the player runs.
+  const float swing = (12.0f + 38.0f * run) * amp;
+  a[dof::kRShoulder + 0] = g.r_arm * swing - 2.0f * lean;
+  a[dof::kRShoulder + 1] = -8.0f - 6.0f * run;
+  a[dof::kRElbow] = 12.0f + 75.0f * run * amp;
+  a[dof::kLShoulder + 0] = g.l_arm * swing - 2.0f * lean;
+  a[dof::kLShoulder + 1] = 8.0f + 6.0f * run;
+  a[dof::kLElbow] = 12.0f + 75.0f * run * amp;
+
+  // Head: the gaze is the server's body + neck exactly; the pelvis, torso and
+  // neck share the yaw so that the head's world yaw matches it.
+  const float head_yaw = -delta_deg(in.gaze, in.heading) - a[dof::kPelvis] - a[dof::kTorso];
+  a[dof::kNeck + 0] = clampf(0.4f * head_yaw, -80.0f, 80.0f);
+  a[dof::kHead + 0] = clampf(head_yaw - a[dof::kNeck + 0], -80.0f, 80.0f);
+  a[dof::kNeck + 1] = 0.5f * lean;  // keep the eyes level against the lean
+  a[dof::kHead + 1] = 0.3f * lean;
+
+  LegPoseJob legs;
+  legs.pelvis_height = lo.pelvis_height;
+  legs.feet[0] = lo.feet[0];
+  legs.feet[1] = lo.feet[1];
+  legs.angles = a;
+  legs.Run();
+  clamp_to_limits(limits_from, a);
+
+  out.x = in.x;
+  out.y = in.y;
+  out.z = lo.pelvis_height;
+  out.heading = wrap_deg(in.heading);
+}
+
+}  // namespace mc::anim

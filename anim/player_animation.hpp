@@ -1,0 +1,45 @@
+// One player's pose at one frame: locomotion (locomotion.hpp) for the legs
+// and the rhythm of the body, the head on the server's gaze, and an optional
+// action motion (kick, tackle, catch, dive; action_motion.hpp) layered over it.
+#pragma once
+
+#include <span>
+
+#include "anim/action_motion.hpp"
+#include "anim/classifier.hpp"
+#include "anim/locomotion.hpp"
+#include "proto/pose_frame.hpp"
+#include "proto/skeleton.hpp"
+
+namespace mc::anim {
+
+// Per-player context carried across frames (owned by the Animator).
+struct PlayerAnim {
+  LocomotionState loco;
+  Action action = Action::Stand;
+  bool was_active = false;
+};
+
+struct PlayerFrameInput {
+  float x = 0, y = 0;          // root, field m (already interpolated)
+  float heading = 0;           // smoothed body heading, field deg
+  float gaze = 0;              // server body + neck, field deg: the head looks exactly here
+  float move_dx = 0, move_dy = 0;  // direction of travel, field (any length; 0 when none)
+  Action action = Action::Stand;   // smoothed decision of this cycle
+  float stamina = 1;           // 0..1
+  bool reset = false;          // teleport or (re)connection: feet under the body
+  bool animate_locomotion = true;  // detail level: false -> glide standing
+  float dt = 0.05f;
+  const ActionMotion* motion = nullptr;  // an action layered over locomotion, or null
+  float motion_time = 0;       // s since the action's contact (negative before)
+};
+
+// Writes x, y, z, heading and the angles of `out` (side, unum, state are the
+// caller's). `limits_from` clamps every angle into its joint limits.
+void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const LocomotionParams& loco_params,
+                    const SkeletonDef& limits_from, PlayerPose& out);
+
+// Clamps each angle into its joint's [min, max]; returns how many were out.
+int clamp_to_limits(const SkeletonDef& skeleton, std::span<float> angles);
+
+}  // namespace mc::anim
