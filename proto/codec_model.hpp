@@ -1,29 +1,53 @@
-// The state that FrameEncoder and FrameDecoder keep in lockstep: the two
-// previous quantized frames (for prediction) and the adaptive Rice contexts.
-// Both reset it at every keyframe, so a decoder that starts at any keyframe
-// rebuilds exactly the encoder's state. Internal to proto/.
+// The state FrameEncoder and FrameDecoder keep in lockstep, and the one
+// template that walks a frame body for both (so that the two sides cannot
+// disagree on an order or a context). Internal to proto/; SPEC.md section 4
+// describes the same walk in prose.
+//
+// Everything here restarts at each keyframe, so a decoder that starts at
+// any keyframe rebuilds exactly the encoder's state.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 
-#include "proto/bit_io.hpp"
 #include "proto/quantizer.hpp"
+#include "proto/residual_coder.hpp"
 
 namespace mc::proto::detail {
 
+// Adaptive contexts of one kind of frame (keyframes and deltas keep separate
+// sets: their statistics differ by orders of magnitude).
+struct ModelSet {
+  SignedModel ball_xy, ball_z, pos_xy, pos_z, heading;
+  std::array<SignedModel, kMaxDof> angle;
+  Prob meta_changed = kProbInit;
+  void reset() {
+    for (SignedModel* m : {&ball_xy, &ball_z, &pos_xy, &pos_z, &heading}) m->reset();
+    for (auto& m : angle) m.reset();
+    meta_changed = kProbInit;
+  }
+};
+
+// The last residual of each value, per player: its magnitude picks the
+// activity class of the next residual of the same value.
+struct LastResiduals {
+  std::array<std::int32_t, 3> ball{};
+  std::array<std::array<std::int32_t, 4>, kMaxPlayers> root{};       // x, y, z, heading
+  std::array<std::array<std::int32_t, kMaxDof>, kMaxPlayers> angle{};
+};
+
 struct CodecModel {
-  RiceContext ball_xy, ball_z, pos_xy, pos_z, heading;
-  std::array<RiceContext, kMaxDof> angle;
-  QuantFrame prev, prev2;  // the last and second-to-last frames, as decoded
+  ModelSet key, delta;
+  LastResiduals last;
+  QuantFrame prev, prev2;  // the frames at t-1 and t-2, as decoded
   int history = 0;         // how many of prev, prev2 are valid (0..2)
 
-  void start_keyframe(const QuantFrame& key) {
-    for (RiceContext* c : {&ball_xy, &ball_z, &pos_xy, &pos_z, &heading}) c->reset();
-    for (auto& c : angle) c.reset();
-    prev = key;
-    history = 1;
+  void reset_for_keyframe() {
+    key.reset();
+    delta.reset();
+    last = LastResiduals{};
+    history = 0;
   }
   void push(const QuantFrame& f) {
     prev2 = prev;
@@ -32,26 +56,137 @@ struct CodecModel {
   }
 
   // Linear extrapolation from the two previous frames (constant velocity);
-  // right after a keyframe only one frame is known, so hold it.
-  std::int64_t extrapolate(std::int32_t a1, std::int32_t a0) const {
-    return history >= 2 ? 2 * static_cast<std::int64_t>(a1) - a0 : a1;
-  }
+  // right after a keyframe only one frame is known, so hold it. Clamped to
+  // the value's range.
   std::int32_t predict(std::int32_t a1, std::int32_t a0, std::int32_t lo, std::int32_t hi) const {
-    return static_cast<std::int32_t>(std::clamp<std::int64_t>(extrapolate(a1, a0), lo, hi));
+    const std::int64_t p = history >= 2 ? 2 * static_cast<std::int64_t>(a1) - a0 : a1;
+    return static_cast<std::int32_t>(std::clamp<std::int64_t>(p, lo, hi));
   }
   // Heading lives on a circle of kHeadingSteps: extrapolate the wrapped turn.
   std::int32_t predict_heading(std::int32_t a1, std::int32_t a0) const {
-    if (history < 2) return a1;
-    return wrap(a1 + wrap_signed(a1 - a0));
+    return history >= 2 ? wrap(a1 + wrap_signed(a1 - a0)) : a1;
   }
   static std::int32_t wrap(std::int64_t v) {
     const std::int64_t m = v % kHeadingSteps;
     return static_cast<std::int32_t>(m < 0 ? m + kHeadingSteps : m);
   }
-  // In [-200, 199].
-  static std::int32_t wrap_signed(std::int64_t v) {
-    return wrap(v + kHeadingSteps / 2) - kHeadingSteps / 2;
-  }
+  // Into [-200, 199].
+  static std::int32_t wrap_signed(std::int64_t v) { return wrap(v + kHeadingSteps / 2) - kHeadingSteps / 2; }
 };
+
+// Zero context: the activity of the same value last time, and whether the
+// previous value of the same player in this frame was non-zero.
+inline int zero_ctx(int act, bool prev_nonzero) { return act * 2 + (prev_nonzero ? 1 : 0); }
+
+// Walks a frame body. `Io` is EncodeIo or DecodeIo (frame_encoder.cpp /
+// frame_decoder.cpp), each with:
+//   bool value(SignedModel&, std::int32_t& v, std::int32_t pred, lo, hi, int zctx, int act, std::int32_t& residual)
+//   bool heading(SignedModel&, std::int32_t& v, std::int32_t pred, int zctx, int act, std::int32_t& residual)
+//   bool flag(Prob&, bool& b);  void direct(std::uint32_t& v, int bits);  void varbits(std::uint32_t& v)
+// The encoder reads `v`, the decoder writes it. A false return means corrupt
+// input (decoder only) and stops the walk.
+template <class Io>
+bool walk_keyframe(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q) {
+  ModelSet& s = m.key;
+  std::int32_t r = 0;
+  for (int a = 0; a < 3; ++a)
+    if (!io.value(a < 2 ? s.ball_xy : s.ball_z, q.ball[a], 0, kPositionMin, kPositionMax, 0, 0, r)) return false;
+  for (std::size_t i = 0; i < q.players.size(); ++i) {
+    QuantPlayer& p = q.players[i];
+    const QuantPlayer* before = i > 0 ? &q.players[i - 1] : nullptr;
+    std::uint32_t side = p.side, unum = p.unum;
+    io.direct(side, 2);
+    io.direct(unum, 4);
+    io.varbits(p.state);
+    p.side = static_cast<std::uint8_t>(side);
+    p.unum = static_cast<std::uint8_t>(unum);
+    if (!io.value(s.pos_xy, p.x, 0, kPositionMin, kPositionMax, 0, 0, r)) return false;
+    if (!io.value(s.pos_xy, p.y, 0, kPositionMin, kPositionMax, 0, 0, r)) return false;
+    if (!io.value(s.pos_z, p.z, before ? before->z : 0, kPositionMin, kPositionMax, 0, 0, r)) return false;
+    if (!io.heading(s.heading, p.heading, 0, 0, 0, r)) return false;
+    // Angles: predicted by the previous player's pose (parked and standing
+    // players share one), the first player by the zero-angle pose.
+    bool prev_nonzero = false;
+    for (int d = 0; d < quant.dof_count(); ++d) {
+      const auto k = static_cast<std::size_t>(d);
+      const std::int32_t pred = before ? before->angles[k] : quant.angle_q(d, 0.0f);
+      if (!io.value(s.angle[k], p.angles[k], pred, 0, quant.grid(d).steps - 1, zero_ctx(0, prev_nonzero), 0, r))
+        return false;
+      prev_nonzero = r != 0;
+    }
+  }
+  return true;
+}
+
+template <class Io>
+bool walk_delta(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q) {
+  ModelSet& s = m.delta;
+  const QuantFrame& p1 = m.prev;
+  const QuantFrame& p0 = m.prev2;
+  std::int32_t r = 0;
+  bool prev_nonzero = false;
+  for (int a = 0; a < 3; ++a) {
+    std::int32_t& last = m.last.ball[static_cast<std::size_t>(a)];
+    const int act = activity_class(last);
+    if (!io.value(a < 2 ? s.ball_xy : s.ball_z, q.ball[a], m.predict(p1.ball[a], p0.ball[a], kPositionMin, kPositionMax),
+                  kPositionMin, kPositionMax, zero_ctx(act, prev_nonzero), act, r))
+      return false;
+    last = r;
+    prev_nonzero = r != 0;
+  }
+  for (std::size_t i = 0; i < q.players.size(); ++i) {
+    QuantPlayer& p = q.players[i];
+    const QuantPlayer& a1 = p1.players[i];
+    const QuantPlayer& a0 = p0.players[i];
+
+    bool meta = p.side != a1.side || p.unum != a1.unum || p.state != a1.state;
+    io.flag(s.meta_changed, meta);
+    if (meta) {
+      std::uint32_t side = p.side, unum = p.unum;
+      io.direct(side, 2);
+      io.direct(unum, 4);
+      io.varbits(p.state);
+      p.side = static_cast<std::uint8_t>(side);
+      p.unum = static_cast<std::uint8_t>(unum);
+    } else {
+      p.side = a1.side, p.unum = a1.unum, p.state = a1.state;
+    }
+
+    auto& root_last = m.last.root[i];
+    std::int32_t* const root[3] = {&p.x, &p.y, &p.z};
+    const std::int32_t root1[3] = {a1.x, a1.y, a1.z};
+    const std::int32_t root0[3] = {a0.x, a0.y, a0.z};
+    prev_nonzero = false;
+    for (int c = 0; c < 3; ++c) {
+      const auto k = static_cast<std::size_t>(c);
+      const int act = activity_class(root_last[k]);
+      if (!io.value(c < 2 ? s.pos_xy : s.pos_z, *root[c], m.predict(root1[c], root0[c], kPositionMin, kPositionMax),
+                    kPositionMin, kPositionMax, zero_ctx(act, prev_nonzero), act, r))
+        return false;
+      root_last[k] = r;
+      prev_nonzero = r != 0;
+    }
+    {
+      const int act = activity_class(root_last[3]);
+      if (!io.heading(s.heading, p.heading, m.predict_heading(a1.heading, a0.heading), zero_ctx(act, prev_nonzero), act, r))
+        return false;
+      root_last[3] = r;
+    }
+
+    auto& angle_last = m.last.angle[i];
+    prev_nonzero = false;
+    for (int d = 0; d < quant.dof_count(); ++d) {
+      const auto k = static_cast<std::size_t>(d);
+      const std::int32_t hi = quant.grid(d).steps - 1;
+      const int act = activity_class(angle_last[k]);
+      if (!io.value(s.angle[k], p.angles[k], m.predict(a1.angles[k], a0.angles[k], 0, hi), 0, hi,
+                    zero_ctx(act, prev_nonzero), act, r))
+        return false;
+      angle_last[k] = r;
+      prev_nonzero = r != 0;
+    }
+  }
+  return true;
+}
 
 }  // namespace mc::proto::detail

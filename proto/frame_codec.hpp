@@ -1,9 +1,10 @@
 // Pose-frame encoder and decoder (SPEC.md is the normative description).
 //
-// A frame is a 26-byte header (proto/frame_header.hpp) and a bit-packed
-// body. Keyframes are self-contained; a delta frame codes each quantized
-// value as the residual of a linear prediction from the two previous frames,
-// with adaptive Rice codes, and flags players whose residuals are all zero.
+// A frame is a 26-byte header (proto/frame_header.hpp) and a body coded
+// with an adaptive binary range coder. Keyframes are self-contained; a delta
+// frame codes each quantized value as the residual of a linear prediction
+// from the two previous frames, in contexts chosen by how much the same
+// value moved last time (codec_model.hpp).
 // The relay encodes each frame once and sends the same bytes to everyone.
 #pragma once
 
@@ -40,9 +41,6 @@ class FrameEncoder {
   const Quantizer& quantizer() const { return quant_; }
 
  private:
-  void write_keyframe(const QuantFrame& q, BitWriter& w);
-  void write_delta(const QuantFrame& q, BitWriter& w);
-
   Quantizer quant_;
   EncoderOptions options_;
   detail::CodecModel model_;
@@ -69,9 +67,6 @@ class FrameDecoder {
   const Quantizer& quantizer() const { return quant_; }
 
  private:
-  bool read_keyframe(BitReader& r, QuantFrame& q, std::string& error);
-  bool read_delta(BitReader& r, QuantFrame& q, std::string& error);
-
   Quantizer quant_;
   detail::CodecModel model_;
   std::uint32_t last_seq_ = 0;

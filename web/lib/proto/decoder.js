@@ -17,11 +17,10 @@ export const HEADING_STEPS = 400;
 export const MAX_PLAYERS = 22;
 export const MAX_DOF = 64;
 
+import { RangeDecoder, SignedModel, PROB_INIT, activityClass, zeroCtx } from './range_decoder.js';
+
 const POS_MIN = -32768;
 const POS_MAX = 32767;
-const ESCAPE_RUN = 16;
-const MAX_K = 24;
-const HALVE_AT = 32;
 
 /** Parses any text control message; throws Error when it is not a JSON object with a string "type". */
 export function parseControl(text) {
@@ -89,61 +88,9 @@ function toBytes(buffer) {
   throw new Error('pose frame must be an ArrayBuffer or a typed array');
 }
 
-// LSB-first bit reader; reads past the end return 0 and set `overrun`.
-class BitReader {
-  constructor(bytes) {
-    this.bytes = bytes;
-    this.totalBits = bytes.length * 8;
-    this.pos = 0;
-    this.overrun = false;
-  }
-  get(bits) {
-    let value = 0;
-    for (let i = 0; i < bits; i++) {
-      if (this.pos >= this.totalBits) {
-        this.overrun = true;
-        return 0;
-      }
-      const bit = (this.bytes[this.pos >>> 3] >>> (this.pos & 7)) & 1;
-      value += bit * 2 ** i;
-      this.pos++;
-    }
-    return value;
-  }
-  varbits() {
-    const len = this.get(5);
-    if (len === 0) return 0;
-    if (len === 1) return 1;
-    return 2 ** (len - 1) + this.get(len - 1);
-  }
-}
-
-// Adaptive Golomb-Rice context (proto/bit_io.hpp RiceContext).
-class Rice {
-  constructor() {
-    this.reset();
-  }
-  reset() {
-    this.sum = 4;
-    this.count = 1;
-  }
-  k() {
-    let k = 0;
-    while (k < MAX_K && this.count * 2 ** k < this.sum) k++;
-    return k;
-  }
-  read(r) {
-    const k = this.k();
-    let q = 0;
-    while (q < ESCAPE_RUN && r.get(1) === 1) q++;
-    const u = q === ESCAPE_RUN ? r.get(32) : q * 2 ** k + r.get(k);
-    this.sum += u;
-    if (++this.count >= HALVE_AT) {
-      this.sum = Math.floor((this.sum + 1) / 2);
-      this.count = Math.floor(this.count / 2);
-    }
-    return u % 2 === 1 ? -(u - 1) / 2 - 1 : u / 2;
-  }
+// JS Math.round rounds -0.5 up; C++ std::lround rounds half away from zero.
+function roundHalfAway(x) {
+  return x < 0 ? -Math.round(-x) : Math.round(x);
 }
 
 /** The quantization grid of each dof, from the hello's skeleton (proto/quantizer.cpp). */
@@ -157,9 +104,9 @@ export function buildGrids(skeleton) {
       const loM = roundHalfAway(Math.fround(lo) * 1000);
       const hiM = Math.max(loM, roundHalfAway(Math.fround(hi) * 1000));
       const steps = Math.floor((hiM - loM + ANGLE_STEP_MDEG - 1) / ANGLE_STEP_MDEG) + 1;
-      let bits = 0;
-      while (bits < 31 && 2 ** bits <= steps - 1) bits++;
-      grids.push({ loM, hiM, steps, bits });
+      // Index of 0 deg (clamped): what the first keyframe player is predicted by.
+      const restIndex = clamp(roundHalfAway((0 - loM) / ANGLE_STEP_MDEG), 0, steps - 1);
+      grids.push({ loM, hiM, steps, restIndex });
     }
   }
   return grids;
@@ -183,15 +130,6 @@ export function skeletonFingerprint(grids) {
   return h >>> 0;
 }
 
-// JS Math.round rounds -0.5 up; C++ std::lround rounds half away from zero.
-// Limits are floats in JSON, so use the symmetric rule to match.
-function roundHalfAway(x) {
-  return x < 0 ? -Math.round(-x) : Math.round(x);
-}
-
-function signed16(u) {
-  return u >= 32768 ? u - 65536 : u;
-}
 function clamp(v, lo, hi) {
   return v < lo ? lo : v > hi ? hi : v;
 }
@@ -211,6 +149,32 @@ function emptyQuant(dofs) {
   return { ball: [0, 0, 0], players };
 }
 
+// One context set per frame kind (proto/codec_model.hpp ModelSet).
+function newModelSet(dofs) {
+  const angle = [];
+  for (let d = 0; d < dofs; d++) angle.push(new SignedModel());
+  return {
+    ballXY: new SignedModel(),
+    ballZ: new SignedModel(),
+    posXY: new SignedModel(),
+    posZ: new SignedModel(),
+    heading: new SignedModel(),
+    angle,
+    meta: new Uint16Array(1).fill(PROB_INIT),
+  };
+}
+
+// The last residual of each value per player (proto/codec_model.hpp LastResiduals).
+function newLastResiduals(dofs) {
+  const root = [];
+  const angle = [];
+  for (let i = 0; i < MAX_PLAYERS; i++) {
+    root.push(new Int32Array(4));
+    angle.push(new Int32Array(dofs));
+  }
+  return { ball: new Int32Array(3), root, angle };
+}
+
 export class FrameDecoder {
   /** @param skeleton the "skeleton" object of the hello (joints with dofs and limits). */
   constructor(skeleton) {
@@ -218,8 +182,6 @@ export class FrameDecoder {
     this.grids = buildGrids(skeleton);
     this.dofCount = this.grids.length;
     this.fingerprint = skeletonFingerprint(this.grids);
-    this.ctx = { ballXY: new Rice(), ballZ: new Rice(), posXY: new Rice(), posZ: new Rice(), heading: new Rice() };
-    this.angleCtx = this.grids.map(() => new Rice());
     this.prev = emptyQuant(this.dofCount);
     this.prev2 = emptyQuant(this.dofCount);
     this.history = 0;
@@ -248,22 +210,29 @@ export class FrameDecoder {
           throw new Error(`gap before delta frame ${h.seq} (last frame was ${this.lastSeq}): waiting for a keyframe`);
         }
       }
-      const r = new BitReader(bytes.subarray(HEADER_SIZE));
-      const q = h.keyframe ? this.#readKeyframe(r) : this.#readDelta(r);
-      if (r.overrun) throw new Error(`${h.keyframe ? 'key' : 'delta '}frame ${h.seq} truncated`);
-      if (h.minor === PROTOCOL_MINOR && r.totalBits - r.pos >= 8) {
-        throw new Error(`corrupt pose frame ${h.seq}: ${Math.floor((r.totalBits - r.pos) / 8)} unexpected trailing bytes`);
-      }
+      const rc = new RangeDecoder(bytes.subarray(HEADER_SIZE));
+      let q;
       if (h.keyframe) {
-        for (const c of Object.values(this.ctx)) c.reset();
-        for (const c of this.angleCtx) c.reset();
-        this.prev = q;
-        this.history = 1;
+        this.key = newModelSet(this.dofCount);
+        this.delta = newModelSet(this.dofCount);
+        this.last = newLastResiduals(this.dofCount);
+        this.history = 0;
+        const fp = rc.direct(32);
+        if (!rc.overrun && fp !== this.fingerprint) {
+          throw new Error(`keyframe was encoded for a different skeleton (fingerprint ${fp}, expected ${this.fingerprint})`);
+        }
+        q = this.#readKeyframe(rc);
       } else {
-        this.prev2 = this.prev;
-        this.prev = q;
-        this.history = Math.min(this.history + 1, 2);
+        q = this.#readDelta(rc);
       }
+      if (rc.overrun) throw new Error(`${h.keyframe ? 'keyframe' : 'delta frame'} ${h.seq} truncated`);
+      const bodyLength = bytes.length - HEADER_SIZE;
+      if (h.minor === PROTOCOL_MINOR && rc.pos !== bodyLength) {
+        throw new Error(`corrupt pose frame ${h.seq}: ${bodyLength - rc.pos} unexpected trailing bytes`);
+      }
+      this.prev2 = this.prev;
+      this.prev = q;
+      this.history = Math.min(this.history + 1, 2);
       this.lastSeq = h.seq;
       return this.#dequantize(h, q);
     } catch (e) {
@@ -279,84 +248,105 @@ export class FrameDecoder {
     return this.history >= 2 ? wrapHeading(a1 + wrapSigned(a1 - a0)) : a1;
   }
 
-  #readKeyframe(r) {
-    // Contexts restart at every keyframe (done after a successful decode; a
-    // keyframe itself uses no Rice codes).
-    const q = emptyQuant(this.dofCount);
-    const fp = r.get(32);
-    if (!r.overrun && fp !== this.fingerprint) {
-      throw new Error(`keyframe was encoded for a different skeleton (fingerprint ${fp}, expected ${this.fingerprint})`);
+  // Prediction + decoded residual, range-checked; returns [value, residual].
+  #value(rc, model, pred, lo, hi, zctx, act) {
+    const res = model.decode(rc, zctx, act);
+    const v = pred + res;
+    if (v < lo || v > hi) {
+      throw new Error(rc.overrun ? 'pose frame truncated' : 'corrupt pose frame: value out of range');
     }
-    for (let a = 0; a < 3; a++) q.ball[a] = signed16(r.get(16));
-    for (const p of q.players) {
-      p.side = r.get(2);
-      p.unum = r.get(4);
-      p.state = r.varbits();
-      p.x = signed16(r.get(16));
-      p.y = signed16(r.get(16));
-      p.z = signed16(r.get(16));
-      p.heading = r.get(9);
-      if (p.heading >= HEADING_STEPS) throw new Error(`corrupt keyframe: heading index ${p.heading} out of range`);
+    return [v, res];
+  }
+  #heading(rc, model, pred, zctx, act) {
+    const res = model.decode(rc, zctx, act);
+    if (res < -HEADING_STEPS / 2 || res >= HEADING_STEPS / 2) {
+      throw new Error(rc.overrun ? 'pose frame truncated' : 'corrupt pose frame: heading out of range');
+    }
+    return [wrapHeading(pred + res), res];
+  }
+
+  // proto/codec_model.hpp walk_keyframe.
+  #readKeyframe(rc) {
+    const s = this.key;
+    const q = emptyQuant(this.dofCount);
+    for (let a = 0; a < 3; a++) [q.ball[a]] = this.#value(rc, a < 2 ? s.ballXY : s.ballZ, 0, POS_MIN, POS_MAX, 0, 0);
+    for (let i = 0; i < MAX_PLAYERS; i++) {
+      const p = q.players[i];
+      const before = i > 0 ? q.players[i - 1] : null;
+      p.side = rc.direct(2);
+      p.unum = rc.direct(4);
+      p.state = rc.varbits();
+      [p.x] = this.#value(rc, s.posXY, 0, POS_MIN, POS_MAX, 0, 0);
+      [p.y] = this.#value(rc, s.posXY, 0, POS_MIN, POS_MAX, 0, 0);
+      [p.z] = this.#value(rc, s.posZ, before ? before.z : 0, POS_MIN, POS_MAX, 0, 0);
+      [p.heading] = this.#heading(rc, s.heading, 0, 0, 0);
+      let prevNonzero = false;
       for (let d = 0; d < this.dofCount; d++) {
-        const v = r.get(this.grids[d].bits);
-        if (v >= this.grids[d].steps) throw new Error(`corrupt keyframe: angle index out of range for dof ${d}`);
+        const g = this.grids[d];
+        const pred = before ? before.angles[d] : g.restIndex;
+        const [v, r] = this.#value(rc, s.angle[d], pred, 0, g.steps - 1, zeroCtx(0, prevNonzero), 0);
         p.angles[d] = v;
+        prevNonzero = r !== 0;
       }
-      if (r.overrun) break;
     }
     return q;
   }
 
-  #readDelta(r) {
+  // proto/codec_model.hpp walk_delta.
+  #readDelta(rc) {
+    const s = this.delta;
+    const last = this.last;
     const p1 = this.prev;
     const p0 = this.prev2;
     const q = emptyQuant(this.dofCount);
-    const corrupt = (what) =>
-      new Error(r.overrun ? 'delta frame truncated' : `corrupt delta frame: ${what} out of range`);
-    const apply = (pred, res, lo, hi, what) => {
-      const v = pred + res;
-      if (v < lo || v > hi) throw corrupt(what);
-      return v;
-    };
-    const ballMoved = r.get(1) === 1;
+    let prevNonzero = false;
     for (let a = 0; a < 3; a++) {
-      const res = !ballMoved ? 0 : a < 2 ? this.ctx.ballXY.read(r) : this.ctx.ballZ.read(r);
-      q.ball[a] = apply(this.#predict(p1.ball[a], p0.ball[a], POS_MIN, POS_MAX), res, POS_MIN, POS_MAX, 'ball position');
+      const act = activityClass(last.ball[a]);
+      const pred = this.#predict(p1.ball[a], p0.ball[a], POS_MIN, POS_MAX);
+      const [v, r] = this.#value(rc, a < 2 ? s.ballXY : s.ballZ, pred, POS_MIN, POS_MAX, zeroCtx(act, prevNonzero), act);
+      q.ball[a] = v;
+      last.ball[a] = r;
+      prevNonzero = r !== 0;
     }
     for (let i = 0; i < MAX_PLAYERS; i++) {
       const p = q.players[i];
       const a1 = p1.players[i];
       const a0 = p0.players[i];
-      p.side = a1.side;
-      p.unum = a1.unum;
-      p.state = a1.state;
-      if (r.get(1) === 1) {
-        p.side = r.get(2);
-        p.unum = r.get(4);
-        p.state = r.varbits();
+      if (rc.bit(s.meta, 0) === 1) {
+        p.side = rc.direct(2);
+        p.unum = rc.direct(4);
+        p.state = rc.varbits();
+      } else {
+        p.side = a1.side;
+        p.unum = a1.unum;
+        p.state = a1.state;
       }
-      let rx = 0;
-      let ry = 0;
-      let rz = 0;
-      let rh = 0;
-      if (r.get(1) === 1) {
-        rx = this.ctx.posXY.read(r);
-        ry = this.ctx.posXY.read(r);
-        rz = this.ctx.posZ.read(r);
-        rh = this.ctx.heading.read(r);
+      const rootLast = last.root[i];
+      prevNonzero = false;
+      for (const [c, k] of [[0, 'x'], [1, 'y'], [2, 'z']]) {
+        const act = activityClass(rootLast[c]);
+        const pred = this.#predict(a1[k], a0[k], POS_MIN, POS_MAX);
+        const [v, r] = this.#value(rc, c < 2 ? s.posXY : s.posZ, pred, POS_MIN, POS_MAX, zeroCtx(act, prevNonzero), act);
+        p[k] = v;
+        rootLast[c] = r;
+        prevNonzero = r !== 0;
       }
-      p.x = apply(this.#predict(a1.x, a0.x, POS_MIN, POS_MAX), rx, POS_MIN, POS_MAX, 'player position');
-      p.y = apply(this.#predict(a1.y, a0.y, POS_MIN, POS_MAX), ry, POS_MIN, POS_MAX, 'player position');
-      p.z = apply(this.#predict(a1.z, a0.z, POS_MIN, POS_MAX), rz, POS_MIN, POS_MAX, 'player position');
-      if (rh < -HEADING_STEPS / 2 || rh >= HEADING_STEPS / 2) throw corrupt('heading change');
-      p.heading = wrapHeading(this.#predictHeading(a1.heading, a0.heading) + rh);
-      const pose = r.get(1) === 1;
+      const hAct = activityClass(rootLast[3]);
+      const [hv, hr] = this.#heading(rc, s.heading, this.#predictHeading(a1.heading, a0.heading),
+        zeroCtx(hAct, prevNonzero), hAct);
+      p.heading = hv;
+      rootLast[3] = hr;
+      const angleLast = last.angle[i];
+      prevNonzero = false;
       for (let d = 0; d < this.dofCount; d++) {
         const hi = this.grids[d].steps - 1;
-        const res = pose ? this.angleCtx[d].read(r) : 0;
-        p.angles[d] = apply(this.#predict(a1.angles[d], a0.angles[d], 0, hi), res, 0, hi, 'joint angle');
+        const act = activityClass(angleLast[d]);
+        const pred = this.#predict(a1.angles[d], a0.angles[d], 0, hi);
+        const [v, r] = this.#value(rc, s.angle[d], pred, 0, hi, zeroCtx(act, prevNonzero), act);
+        p.angles[d] = v;
+        angleLast[d] = r;
+        prevNonzero = r !== 0;
       }
-      if (r.overrun) break;
     }
     return q;
   }
@@ -371,7 +361,7 @@ export class FrameDecoder {
       let heading = (p.heading * ANGLE_STEP_MDEG) / 1000;
       if (heading > 180) heading -= 360;
       return {
-        side: p.side === 1 ? 1 : p.side === 2 ? -1 : 0, // mc::Side: 1 left, -1 right
+        side: p.side === 1 ? 1 : p.side === 2 ? -1 : 0, // mc::Side: 1 left, -1 right, 0 neutral
         unum: p.unum,
         state: p.state,
         x: p.x * POSITION_STEP_M,

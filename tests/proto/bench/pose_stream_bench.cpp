@@ -1,0 +1,148 @@
+// Pose-stream benchmark (issue 5 "Targets"): encodes every frame of a real
+// full game and prints bytes per frame for keyframes and deltas, kbit/s at
+// 20 Hz, the largest errors after decoding, encode and decode time per
+// frame, beside the same frames as JSON and as raw float32.
+//
+//   proto_pose_stream_bench [--log PATH] [--states N] [--keyframe-interval F] [--synth]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "proto/frame_codec.hpp"
+#include "tests/proto/support/real_game.hpp"
+
+using namespace mc;
+using namespace mc::proto;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+std::string as_json(const PoseFrame& f, int dofs) {
+  nlohmann::json players = nlohmann::json::array();
+  for (const auto& p : f.players) {
+    std::vector<float> a(p.angles.begin(), p.angles.begin() + dofs);
+    players.push_back({{"side", static_cast<int>(p.side)}, {"unum", p.unum}, {"state", p.state}, {"x", p.x},
+                       {"y", p.y}, {"z", p.z}, {"heading", p.heading}, {"angles", a}});
+  }
+  return nlohmann::json{{"seq", f.seq}, {"time", f.time}, {"stoppage", f.stoppage}, {"substep", f.substep},
+                        {"server_time_ms", f.server_time_ms}, {"play_mode", static_cast<int>(f.play_mode)},
+                        {"score", {f.score_left, f.score_right}},
+                        {"ball", {f.ball.x, f.ball.y, f.ball.z}}, {"players", players}}
+      .dump();
+}
+
+double angle_diff(double a, double b) {
+  double d = std::fmod(std::abs(a - b), 360.0);
+  return std::min(d, 360.0 - d);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string log = testing::default_full_game_log();
+  std::size_t max_states = 0;
+  EncoderOptions options;
+  bool synth = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--log" && i + 1 < argc) log = argv[++i];
+    else if (a == "--states" && i + 1 < argc) max_states = std::stoul(argv[++i]);
+    else if (a == "--keyframe-interval" && i + 1 < argc) options.keyframe_interval = std::stoi(argv[++i]);
+    else if (a == "--synth") synth = true;
+    else {
+      std::fprintf(stderr, "usage: %s [--log PATH] [--states N] [--keyframe-interval F] [--synth]\n", argv[0]);
+      return 2;
+    }
+  }
+  testing::RealGame game;
+  std::string error;
+  const auto t_load = Clock::now();
+  if (!testing::load_real_game(log, !synth, max_states, game, error)) {
+    std::fprintf(stderr, "cannot load %s: %s\n", log.c_str(), error.c_str());
+    return 1;
+  }
+  const double load_s = std::chrono::duration<double>(Clock::now() - t_load).count();
+  const int dofs = game.skeleton.dof_count();
+  const auto& frames = game.frames;
+  std::printf("log: %s\n", log.c_str());
+  std::printf("frames: %zu (%s, skeleton '%s', %d dof, %.1f s to read and animate)\n", frames.size(),
+              game.animated_by.c_str(), game.skeleton.name.c_str(), dofs, load_s);
+  std::printf("keyframe interval: %d frames\n\n", options.keyframe_interval);
+
+  FrameEncoder enc(game.skeleton, options);
+  std::vector<std::string> encoded;
+  std::vector<bool> is_key;
+  encoded.reserve(frames.size());
+  const auto t0 = Clock::now();
+  for (const auto& f : frames) {
+    bool key = false;
+    encoded.push_back(enc.encode(f, key));
+    is_key.push_back(key);
+  }
+  const double enc_s = std::chrono::duration<double>(Clock::now() - t0).count();
+
+  FrameDecoder dec(game.skeleton);
+  std::vector<PoseFrame> decoded(frames.size());
+  const auto t1 = Clock::now();
+  for (std::size_t i = 0; i < encoded.size(); ++i) {
+    if (!dec.decode(encoded[i], decoded[i], error)) {
+      std::fprintf(stderr, "decode failed at frame %zu: %s\n", i, error.c_str());
+      return 1;
+    }
+  }
+  const double dec_s = std::chrono::duration<double>(Clock::now() - t1).count();
+
+  double max_angle = 0, max_heading = 0, max_pos = 0;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const auto& a = frames[i];
+    const auto& b = decoded[i];
+    const auto dist = [](float ax, float ay, float az, float bx, float by, float bz) {
+      return std::sqrt(double(ax - bx) * (ax - bx) + double(ay - by) * (ay - by) + double(az - bz) * (az - bz));
+    };
+    max_pos = std::max(max_pos, dist(a.ball.x, a.ball.y, a.ball.z, b.ball.x, b.ball.y, b.ball.z));
+    for (std::size_t p = 0; p < a.players.size(); ++p) {
+      const auto& pa = a.players[p];
+      const auto& pb = b.players[p];
+      max_pos = std::max(max_pos, dist(pa.x, pa.y, pa.z, pb.x, pb.y, pb.z));
+      max_heading = std::max(max_heading, angle_diff(pa.heading, pb.heading));
+      for (int d = 0; d < dofs; ++d)
+        max_angle = std::max(max_angle, std::abs(double(pa.angles[static_cast<std::size_t>(d)]) - pb.angles[static_cast<std::size_t>(d)]));
+    }
+  }
+
+  std::size_t key_n = 0, key_b = 0, delta_n = 0, delta_b = 0, key_max = 0, delta_max = 0;
+  for (std::size_t i = 0; i < encoded.size(); ++i) {
+    if (is_key[i]) key_n++, key_b += encoded[i].size(), key_max = std::max(key_max, encoded[i].size());
+    else delta_n++, delta_b += encoded[i].size(), delta_max = std::max(delta_max, encoded[i].size());
+  }
+  std::size_t json_b = 0;
+  for (const auto& f : frames) json_b += as_json(f, dofs).size();
+  const double raw_frame = kFrameHeaderSize + 4.0 * (3 + kMaxPlayers * (4 + dofs)) + kMaxPlayers * 6;  // + ids/state
+  const double n = static_cast<double>(frames.size());
+  const double mean = static_cast<double>(key_b + delta_b) / n;
+  const auto kbps = [](double bytes_per_frame) { return bytes_per_frame * 8 * 20 / 1000; };
+
+  std::printf("%-24s %12s %12s %12s\n", "encoding", "B/frame", "kbit/s@20Hz", "vs codec");
+  std::printf("%-24s %12.1f %12.1f %11.1fx\n", "codec (mean)", mean, kbps(mean), 1.0);
+  std::printf("%-24s %12.1f %12s   (%zu keyframes, largest %zu B)\n", "  keyframes", double(key_b) / double(key_n), "",
+              key_n, key_max);
+  std::printf("%-24s %12.1f %12s   (%zu deltas, largest %zu B)\n", "  deltas", delta_n ? double(delta_b) / double(delta_n) : 0.0,
+              "", delta_n, delta_max);
+  std::printf("%-24s %12.1f %12.1f %11.1fx\n", "raw float32", raw_frame, kbps(raw_frame), raw_frame / mean);
+  std::printf("%-24s %12.1f %12.1f %11.1fx\n", "JSON", double(json_b) / n, kbps(double(json_b) / n),
+              double(json_b) / n / mean);
+  std::printf("\nfull game: %.2f MB of frames (%.0f s of play)\n", double(key_b + delta_b) / 1e6, n / 20.0);
+  std::printf("largest joint-angle error: %.3f deg (budget 0.5)\n", max_angle);
+  std::printf("largest heading error:     %.3f deg (budget 0.5)\n", max_heading);
+  std::printf("largest position error:    %.2f cm (3D distance, budget 1)\n", max_pos * 100);
+  std::printf("encode: %.1f us/frame   decode: %.1f us/frame\n", enc_s * 1e6 / n, dec_s * 1e6 / n);
+  const bool ok = mean <= 300 && max_angle <= 0.5 && max_heading <= 0.5 && max_pos <= 0.01;
+  std::printf("\ntargets (mean <= 300 B, angle <= 0.5 deg, position <= 1 cm): %s\n", ok ? "MET" : "NOT MET");
+  return 0;
+}
