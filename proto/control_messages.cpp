@@ -1,0 +1,179 @@
+#include "proto/control_messages.hpp"
+
+#include <stdexcept>
+
+namespace mc::proto {
+namespace {
+
+using nlohmann::json;
+
+const char* side_name(Side s) { return s == Side::Left ? "left" : s == Side::Right ? "right" : "neutral"; }
+Side side_from(const json& j) {
+  const std::string s = j.get<std::string>();
+  if (s == "left") return Side::Left;
+  if (s == "right") return Side::Right;
+  if (s == "neutral") return Side::Neutral;
+  throw std::runtime_error("side must be \"left\", \"right\" or \"neutral\"");
+}
+std::uint8_t unum_from(const json& j) {
+  const int u = j.get<int>();
+  if (u < 0 || u > kPlayersPerSide) throw std::runtime_error("unum out of range");
+  return static_cast<std::uint8_t>(u);
+}
+json team_json(const TeamHello& t) { return {{"name", t.name}, {"color", t.color}, {"color2", t.color2}}; }
+TeamHello team_from(const json& j) {
+  TeamHello t;
+  t.name = j.at("name").get<std::string>();
+  t.color = j.value("color", t.color);
+  t.color2 = j.value("color2", t.color2);
+  return t;
+}
+
+struct ToJson {
+  json operator()(const KickEvent& e) const {
+    return {{"type", "kick"}, {"seq", e.seq}, {"time", e.time}, {"side", side_name(e.side)}, {"unum", e.unum},
+            {"foot", e.foot == Foot::Left ? "left" : "right"}, {"contact_time_ms", e.contact_time_ms}};
+  }
+  json operator()(const GoalEvent& e) const {
+    return {{"type", "goal"}, {"seq", e.seq}, {"time", e.time}, {"side", side_name(e.side)},
+            {"score", {e.score_left, e.score_right}}};
+  }
+  json operator()(const PlayModeEvent& e) const {
+    return {{"type", "play_mode"}, {"seq", e.seq}, {"time", e.time}, {"mode", std::string(play_mode_name(e.mode))},
+            {"mode_id", static_cast<int>(e.mode)}};
+  }
+  json operator()(const CardEvent& e) const {
+    return {{"type", "card"}, {"seq", e.seq}, {"time", e.time}, {"side", side_name(e.side)}, {"unum", e.unum},
+            {"card", e.card == CardColor::Red ? "red" : "yellow"}};
+  }
+  json operator()(const ScoreUpdate& e) const {
+    return {{"type", "score"}, {"seq", e.seq}, {"time", e.time}, {"left", e.left}, {"right", e.right},
+            {"pen_left", e.pen_left}, {"pen_right", e.pen_right}};
+  }
+  json operator()(const TeamsUpdate& e) const {
+    return {{"type", "teams"}, {"seq", e.seq}, {"left", team_json(e.left)}, {"right", team_json(e.right)}};
+  }
+  json operator()(const FeedStatus& e) const {
+    return {{"type", "feed"}, {"status", e.lost ? "lost" : "back"}, {"seq", e.seq},
+            {"server_time_ms", e.server_time_ms}, {"detail", e.detail}};
+  }
+};
+
+ControlMessage parse(const json& j, const std::string& type) {
+  if (type == "kick") {
+    KickEvent e;
+    e.seq = j.at("seq").get<std::uint32_t>();
+    e.time = j.at("time").get<int>();
+    e.side = side_from(j.at("side"));
+    e.unum = unum_from(j.at("unum"));
+    const std::string foot = j.at("foot").get<std::string>();
+    if (foot != "left" && foot != "right") throw std::runtime_error("foot must be \"left\" or \"right\"");
+    e.foot = foot == "left" ? Foot::Left : Foot::Right;
+    e.contact_time_ms = j.at("contact_time_ms").get<std::uint64_t>();
+    return e;
+  }
+  if (type == "goal") {
+    GoalEvent e;
+    e.seq = j.at("seq").get<std::uint32_t>();
+    e.time = j.at("time").get<int>();
+    e.side = side_from(j.at("side"));
+    const json& s = j.at("score");
+    if (!s.is_array() || s.size() != 2) throw std::runtime_error("score must be [left, right]");
+    e.score_left = s.at(0).get<int>();
+    e.score_right = s.at(1).get<int>();
+    return e;
+  }
+  if (type == "play_mode") {
+    PlayModeEvent e;
+    e.seq = j.at("seq").get<std::uint32_t>();
+    e.time = j.at("time").get<int>();
+    const auto mode = play_mode_from_name(j.at("mode").get<std::string>());
+    if (!mode) throw std::runtime_error("unknown play mode name");
+    e.mode = *mode;
+    return e;
+  }
+  if (type == "card") {
+    CardEvent e;
+    e.seq = j.at("seq").get<std::uint32_t>();
+    e.time = j.at("time").get<int>();
+    e.side = side_from(j.at("side"));
+    e.unum = unum_from(j.at("unum"));
+    const std::string card = j.at("card").get<std::string>();
+    if (card != "yellow" && card != "red") throw std::runtime_error("card must be \"yellow\" or \"red\"");
+    e.card = card == "red" ? CardColor::Red : CardColor::Yellow;
+    return e;
+  }
+  if (type == "score") {
+    ScoreUpdate e;
+    e.seq = j.at("seq").get<std::uint32_t>();
+    e.time = j.at("time").get<int>();
+    e.left = j.at("left").get<int>();
+    e.right = j.at("right").get<int>();
+    e.pen_left = j.value("pen_left", 0);
+    e.pen_right = j.value("pen_right", 0);
+    return e;
+  }
+  if (type == "teams") {
+    TeamsUpdate e;
+    e.seq = j.at("seq").get<std::uint32_t>();
+    e.left = team_from(j.at("left"));
+    e.right = team_from(j.at("right"));
+    return e;
+  }
+  if (type == "feed") {
+    FeedStatus e;
+    const std::string status = j.at("status").get<std::string>();
+    if (status != "lost" && status != "back") throw std::runtime_error("status must be \"lost\" or \"back\"");
+    e.lost = status == "lost";
+    e.seq = j.at("seq").get<std::uint32_t>();
+    e.server_time_ms = j.at("server_time_ms").get<std::uint64_t>();
+    e.detail = j.value("detail", "");
+    return e;
+  }
+  throw std::invalid_argument("unknown control message type \"" + type + "\"");
+}
+
+}  // namespace
+
+json control_to_json_value(const ControlMessage& message) { return std::visit(ToJson{}, message); }
+std::string to_json(const ControlMessage& message) { return control_to_json_value(message).dump(); }
+
+std::string control_type(std::string_view text, std::string& error) {
+  const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded() || !j.is_object()) {
+    error = "control message is not a JSON object";
+    return "";
+  }
+  const auto it = j.find("type");
+  if (it == j.end() || !it->is_string()) {
+    error = "control message has no \"type\"";
+    return "";
+  }
+  return it->get<std::string>();
+}
+
+bool control_from_json(std::string_view text, ControlMessage& out, std::string& error) {
+  const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded() || !j.is_object()) {
+    error = "control message is not a JSON object";
+    return false;
+  }
+  const auto it = j.find("type");
+  if (it == j.end() || !it->is_string()) {
+    error = "control message has no \"type\"";
+    return false;
+  }
+  const std::string type = it->get<std::string>();
+  try {
+    out = parse(j, type);
+  } catch (const std::invalid_argument& e) {
+    error = e.what();
+    return false;
+  } catch (const std::exception& e) {
+    error = "bad \"" + type + "\" message: " + e.what();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace mc::proto

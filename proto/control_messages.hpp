@@ -1,0 +1,93 @@
+// Events and metadata changes: the JSON text messages that travel beside
+// the binary pose frames (SPEC.md section 5). The hello is in hello.hpp.
+//
+// Every message is one JSON object with a "type". Events name the frame they
+// belong to (`seq`, PoseFrame::seq) so a client can play a kick sound on the
+// frame where the foot meets the ball; metadata changes apply from `seq` on.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "proto/hello.hpp"
+#include "proto/world_state.hpp"
+
+namespace mc::proto {
+
+enum class Foot : std::uint8_t { Right = 0, Left = 1 };
+enum class CardColor : std::uint8_t { Yellow = 1, Red = 2 };
+
+// "kick": a foot touches the ball.
+struct KickEvent {
+  std::uint32_t seq = 0;
+  int time = 0;                      // simulation cycle
+  Side side = Side::Neutral;
+  std::uint8_t unum = 0;
+  Foot foot = Foot::Right;
+  std::uint64_t contact_time_ms = 0; // stream time of the contact, ms since frame 0 (seq * 50 on a frame)
+};
+
+// "goal": a goal was scored by `side`; the score after it.
+struct GoalEvent {
+  std::uint32_t seq = 0;
+  int time = 0;
+  Side side = Side::Neutral;
+  int score_left = 0, score_right = 0;
+};
+
+// "play_mode": the play mode changed.
+struct PlayModeEvent {
+  std::uint32_t seq = 0;
+  int time = 0;
+  PlayMode mode = PlayMode::Null;
+};
+
+// "card": a player was shown a card.
+struct CardEvent {
+  std::uint32_t seq = 0;
+  int time = 0;
+  Side side = Side::Neutral;
+  std::uint8_t unum = 0;
+  CardColor card = CardColor::Yellow;
+};
+
+// "score": metadata, the score (also sent after a goal and to late joiners).
+struct ScoreUpdate {
+  std::uint32_t seq = 0;
+  int time = 0;
+  int left = 0, right = 0;
+  int pen_left = 0, pen_right = 0;   // penalty shoot-out goals
+};
+
+// "teams": metadata, team names and colours (a team connected late, or a new game).
+struct TeamsUpdate {
+  std::uint32_t seq = 0;
+  TeamHello left, right;
+};
+
+// "feed": metadata, the live feed from rcssserver was lost or is back.
+struct FeedStatus {
+  bool lost = true;
+  std::uint32_t seq = 0;             // the last frame sent before the change
+  std::uint64_t server_time_ms = 0;  // Unix ms when the relay noticed
+  std::string detail;                // human-readable reason
+};
+
+using ControlMessage =
+    std::variant<KickEvent, GoalEvent, PlayModeEvent, CardEvent, ScoreUpdate, TeamsUpdate, FeedStatus>;
+
+nlohmann::json control_to_json_value(const ControlMessage& message);
+std::string to_json(const ControlMessage& message);  // one line
+
+// False with `error` when the text is not a JSON object, has no "type", the
+// type is not one of the above ("hello" included: use hello_from_json), or a
+// field is missing or out of range. A client skips unknown types.
+bool control_from_json(std::string_view text, ControlMessage& out, std::string& error);
+
+// The "type" of any control message text (hello included), "" + error when
+// there is none; for routing before parsing.
+std::string control_type(std::string_view text, std::string& error);
+
+}  // namespace mc::proto

@@ -1,0 +1,74 @@
+#include "proto/control_messages.hpp"
+
+#include <gtest/gtest.h>
+
+namespace mc::proto {
+namespace {
+
+ControlMessage round_trip(const ControlMessage& m) {
+  ControlMessage back;
+  std::string error;
+  EXPECT_TRUE(control_from_json(to_json(m), back, error)) << error << " in " << to_json(m);
+  return back;
+}
+
+TEST(ControlMessages, KickRoundTrips) {
+  KickEvent k{120, 60, Side::Right, 9, Foot::Left, 6025};
+  const std::string text = to_json(ControlMessage{k});
+  EXPECT_NE(text.find("\"type\":\"kick\""), std::string::npos);
+  EXPECT_NE(text.find("\"foot\":\"left\""), std::string::npos);
+  const auto back = std::get<KickEvent>(round_trip(k));
+  EXPECT_EQ(back.seq, 120u);
+  EXPECT_EQ(back.side, Side::Right);
+  EXPECT_EQ(back.unum, 9);
+  EXPECT_EQ(back.foot, Foot::Left);
+  EXPECT_EQ(back.contact_time_ms, 6025u);
+}
+
+TEST(ControlMessages, EveryTypeRoundTrips) {
+  const auto goal = std::get<GoalEvent>(round_trip(GoalEvent{10, 5, Side::Left, 2, 1}));
+  EXPECT_EQ(goal.score_left, 2);
+  EXPECT_EQ(goal.side, Side::Left);
+  const auto pm = std::get<PlayModeEvent>(round_trip(PlayModeEvent{11, 5, PlayMode::KickOffR}));
+  EXPECT_EQ(pm.mode, PlayMode::KickOffR);
+  EXPECT_NE(to_json(ControlMessage{PlayModeEvent{11, 5, PlayMode::KickOffR}}).find("kick_off_r"), std::string::npos);
+  const auto card = std::get<CardEvent>(round_trip(CardEvent{12, 6, Side::Right, 4, CardColor::Red}));
+  EXPECT_EQ(card.card, CardColor::Red);
+  const auto score = std::get<ScoreUpdate>(round_trip(ScoreUpdate{13, 6, 3, 4, 1, 0}));
+  EXPECT_EQ(score.right, 4);
+  EXPECT_EQ(score.pen_left, 1);
+  const auto teams = std::get<TeamsUpdate>(round_trip(TeamsUpdate{0, {"A", "#ff0000", "#000000"}, {"B", "#00ff00", "#ffffff"}}));
+  EXPECT_EQ(teams.right.name, "B");
+  EXPECT_EQ(teams.left.color, "#ff0000");
+  const auto feed = std::get<FeedStatus>(round_trip(FeedStatus{true, 99, 1700000000000ull, "no datagram for 3 s"}));
+  EXPECT_TRUE(feed.lost);
+  EXPECT_EQ(feed.detail, "no datagram for 3 s");
+  EXPECT_FALSE(std::get<FeedStatus>(round_trip(FeedStatus{false, 100, 1, ""})).lost);
+}
+
+TEST(ControlMessages, BadInputIsRefusedWithAClearError) {
+  ControlMessage m;
+  std::string error;
+  EXPECT_FALSE(control_from_json("nope", m, error));
+  EXPECT_NE(error.find("not a JSON object"), std::string::npos);
+  EXPECT_FALSE(control_from_json(R"({"seq":1})", m, error));
+  EXPECT_NE(error.find("no \"type\""), std::string::npos);
+  EXPECT_FALSE(control_from_json(R"({"type":"teleport"})", m, error));
+  EXPECT_NE(error.find("unknown control message type \"teleport\""), std::string::npos);
+  EXPECT_FALSE(control_from_json(R"({"type":"kick","seq":1,"time":1,"side":"up","unum":3,"foot":"left","contact_time_ms":0})", m, error));
+  EXPECT_NE(error.find("side"), std::string::npos) << error;
+  EXPECT_FALSE(control_from_json(R"({"type":"kick","seq":1,"time":1,"side":"left","unum":30,"foot":"left","contact_time_ms":0})", m, error));
+  EXPECT_FALSE(control_from_json(R"({"type":"play_mode","seq":1,"time":1,"mode":"dance"})", m, error));
+  EXPECT_FALSE(control_from_json(R"({"type":"goal","seq":1,"time":1,"side":"left"})", m, error));
+  EXPECT_NE(error.find("bad \"goal\" message"), std::string::npos) << error;
+}
+
+TEST(ControlMessages, TypeIsReadForRouting) {
+  std::string error;
+  EXPECT_EQ(control_type(R"({"type":"hello","protocol":{}})", error), "hello");
+  EXPECT_EQ(control_type("[]", error), "");
+  EXPECT_FALSE(error.empty());
+}
+
+}  // namespace
+}  // namespace mc::proto
