@@ -108,13 +108,11 @@ function startStream() {
         hud.status(`Feed lost (${info.reason}). Reconnecting in ${s} s…`, true);
       } else if (state === 'silent') hud.status('The feed has gone quiet. Waiting for data…', true);
     },
-    async onText(msg) {
+    onText(msg) {
       if (msg.type === 'hello') {
-        let mod;
-        try {
-          mod = await loadDecoder();
-        } catch (e) {
-          hud.status(`The frame decoder could not be loaded: ${e.message}`, true);
+        const mod = decoderModule;
+        if (!mod) {
+          hud.status(`The frame decoder could not be loaded: ${decoderError}`, true);
           return;
         }
         if (!applyHello(msg)) return;
@@ -171,7 +169,17 @@ function onControl(msg) {
   }
 }
 
+// The decoder module is loaded before the socket opens, so that no frame
+// arrives before there is something to decode it.
+let decoderModule = null, decoderError = '';
 let stream = null;
+if (!params.has('fixture')) {
+  try {
+    decoderModule = await loadDecoder();
+  } catch (e) {
+    decoderError = e.message;
+  }
+}
 if (params.has('fixture')) {
   const { startFixture } = await import('./dev/fixture.js');
   startFixture({ onHello: (h) => { applyHello(h); hud.status(null); }, onFrame: (f) => { counters.frames++; pushFrame(f); } });
@@ -323,4 +331,15 @@ window.matchcast = Object.freeze({
   setCamera: (id) => app.setCamera(id),
   select: (key) => select(key),
   toggle: (name) => app.toggle(name),
+  // Where a player's chest is on the screen (CSS px), for click tests.
+  screenOf: (key) => {
+    const rig = players?.get(key);
+    if (!rig?.pose || !rig.root.visible) return null;
+    const v = rig.root.position.clone();
+    v.y += 0.3;
+    v.project(stage.camera);
+    if (v.z > 1) return null;
+    const r = canvas.getBoundingClientRect();
+    return { x: r.left + (v.x + 1) / 2 * r.width, y: r.top + (1 - v.y) / 2 * r.height };
+  },
 });

@@ -1,0 +1,150 @@
+// The page against a running matchcast-server, in headless Debian Chromium:
+// frames decode, 22 players and the ball are drawn and move, every camera
+// switches (screenshot each), a click chooses a player, bad input gives a
+// message and a resync, a phone-sized screen works, and the page survives a
+// server restart. Screenshots go to $MATCHCAST_OUTPUT_DIR (test-output/web).
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { launchBrowser, openPage, shot, startServer, stats, waitFor } from './harness.mjs';
+
+const CAMERAS = ['broadcast', 'orbit', 'free', 'player', 'follow', 'goal', 'top'];
+
+describe('web page against matchcast-server', { timeout: 240000 }, () => {
+  let server, browser, page, errors;
+
+  before(async () => {
+    server = await startServer();
+    browser = await launchBrowser();
+    ({ page, errors } = await openPage(browser, server.url));
+  });
+
+  after(async () => {
+    await browser?.close().catch(() => {});
+    await server?.stop();
+  });
+
+  test('frames decode and 22 players and the ball move', async () => {
+    await waitFor(page, async () => (await stats(page))?.decoded > 20, 'decoded frames');
+    const s = await stats(page);
+    assert.equal(s.hello, true);
+    assert.equal(s.decodeErrors, 0, 'no decoder errors');
+    const p1 = await page.evaluate(() => window.matchcast.playerPositions());
+    assert.equal(p1.filter((p) => p.state !== 0).length, 22, '22 players on the pitch');
+    const seq1 = s.seq;
+    await page.waitForTimeout(2500);
+    const p2 = await page.evaluate(() => window.matchcast.playerPositions());
+    const s2 = await stats(page);
+    assert.ok(s2.seq > seq1, `the picture advances (seq ${seq1} -> ${s2.seq})`);
+    const moved = p2.filter((p, i) => Math.hypot(p.x - p1[i].x, p.y - p1[i].y) > 0.05).length;
+    assert.ok(moved >= 5, `players move between two moments (${moved} moved)`);
+    assert.ok(await page.evaluate(() => window.matchcast.ball()), 'a ball');
+    await page.screenshot({ path: shot('broadcast') });
+    assert.deepEqual(errors, []);
+  });
+
+  test('every camera switches by its button and by its key', async () => {
+    for (const [i, cam] of CAMERAS.entries()) {
+      const before = await page.evaluate(() => window.matchcast.cameraPosition());
+      if (i % 2) await page.keyboard.press(String(i + 1));
+      else await page.click(`[data-camera="${cam}"]`);
+      await waitFor(page, async () => (await stats(page)).camera === cam, `camera ${cam}`, 5000);
+      await page.waitForTimeout(1200);
+      const now = await page.evaluate(() => window.matchcast.cameraPosition());
+      if (cam !== 'free' && cam !== 'orbit') {
+        assert.ok(Math.hypot(now[0] - before[0], now[1] - before[1], now[2] - before[2]) > 0.5,
+          `the ${cam} camera moved the view`);
+      }
+      await page.screenshot({ path: shot(`camera-${cam}`) });
+    }
+    await page.click('[data-camera="broadcast"]');
+  });
+
+  test('clicking a player chooses it and shows its card', async () => {
+    await page.click('[data-camera="top"]');
+    await page.waitForTimeout(800);
+    const target = await page.evaluate(() => {
+      const mc = window.matchcast;
+      for (const p of mc.playerPositions()) {
+        if (p.state === 0) continue;
+        const key = `${p.side}:${p.unum}`;
+        const at = mc.screenOf(key);
+        if (at && at.x > 50 && at.x < innerWidth - 50 && at.y > 80 && at.y < innerHeight - 120) return { key, at };
+      }
+      return null;
+    });
+    assert.ok(target, 'a player on screen');
+    await page.mouse.click(target.at.x, target.at.y);
+    const sel = await waitFor(page, async () => (await stats(page)).selected, 'a chosen player', 5000);
+    assert.ok(sel, 'a player is chosen');
+    assert.equal(await page.isVisible('#player-card'), true);
+    await page.click('[data-camera="follow"]');
+    await page.waitForTimeout(1200);
+    await page.screenshot({ path: shot('chosen-player-follow') });
+    await page.click('[data-camera="broadcast"]');
+  });
+
+  test('overlays toggle', async () => {
+    await page.click('[data-toggle="offside"]');
+    await page.click('[data-toggle="reach"]');
+    await page.waitForTimeout(800);
+    await page.screenshot({ path: shot('overlays') });
+    assert.equal(await page.getAttribute('[data-toggle="offside"]', 'class'), 'on');
+    await page.click('[data-toggle="offside"]');
+    await page.click('[data-toggle="reach"]');
+  });
+
+  test('bad messages give a visible message and the page resyncs', async () => {
+    const ctx = await browser.newContext({ viewport: { width: 1024, height: 640 } });
+    const p = await ctx.newPage();
+    const pageErrors = [];
+    p.on('pageerror', (e) => pageErrors.push(e.message));
+    let route;
+    await p.routeWebSocket(/\/ws/, (ws) => { route = ws; ws.connectToServer(); });
+    await p.goto(`${server.url}?fixed-quality&stats`);
+    await waitFor(p, async () => (await stats(p))?.decoded > 10, 'frames through the route');
+    route.send(Buffer.from([0x4d, 1, 0, 0, 9, 9, 9]));              // truncated frame
+    route.send(Buffer.from('garbage that is not a frame at all'));  // bad magic
+    route.send('{"not json');                                       // bad control message
+    await waitFor(p, async () => (await stats(p)).decodeErrors >= 2, 'decode errors counted', 5000);
+    assert.equal(await p.isVisible('#toast'), true, 'a visible message');
+    const after = (await stats(p)).decoded;
+    await waitFor(p, async () => (await stats(p)).decoded > after + 20, 'decoding again after a keyframe', 10000);
+    await p.screenshot({ path: shot('bad-input') });
+    assert.deepEqual(pageErrors, []);
+    await ctx.close();
+  });
+
+  test('a phone-sized screen keeps the HUD apart', async () => {
+    const ctx = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 1, isMobile: true, hasTouch: true });
+    const p = await ctx.newPage();
+    await p.goto(`${server.url}?fixed-quality&stats`);
+    await waitFor(p, async () => (await stats(p))?.decoded > 10, 'frames on a phone');
+    await p.waitForTimeout(1500);
+    const boxes = await p.evaluate(() => ['scoreboard', 'controls', 'stats'].map((id) => {
+      const r = document.getElementById(id).getBoundingClientRect();
+      return { id, left: r.left, right: r.right, top: r.top, bottom: r.bottom };
+    }));
+    for (const b of boxes) assert.ok(b.left >= 0 && b.right <= 390 + 1, `${b.id} fits the width`);
+    const [sb, ctl] = boxes;
+    assert.ok(sb.bottom <= ctl.top, 'scoreboard and controls do not overlap');
+    await p.screenshot({ path: shot('phone') });
+    await ctx.close();
+  });
+
+  test('the page survives a server restart', async () => {
+    const port = server.port;
+    const connects = (await stats(page)).connects;
+    await server.stop();
+    await waitFor(page, async () => page.isVisible('#status'), 'a feed-lost message', 10000);
+    const text = await page.textContent('#status');
+    assert.match(text, /lost|quiet/i);
+    await page.screenshot({ path: shot('feed-lost') });
+    server = await startServer({ port });
+    await waitFor(page, async () => (await stats(page)).connects > connects, 'a reconnect', 20000);
+    const decoded = (await stats(page)).decoded;
+    await waitFor(page, async () => (await stats(page)).decoded > decoded + 20, 'frames after the restart', 20000);
+    await waitFor(page, async () => !(await page.isVisible('#status')), 'the message gone', 5000);
+    await page.screenshot({ path: shot('after-restart') });
+    assert.deepEqual(errors, []);
+  });
+});

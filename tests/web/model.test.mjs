@@ -1,0 +1,101 @@
+// The page's pure logic, in node: the jitter buffer (ordering, gaps, resync,
+// playhead behind the newest frame), frame interpolation, and the events
+// the picture fires (kick, goal, card, foul).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const WEB = process.env.MATCHCAST_WEB_DIR ?? path.resolve(import.meta.dirname, '../../web');
+const load = (p) => import(pathToFileURL(path.join(WEB, p)).href);
+const { JitterBuffer } = await load('src/net/jitter.js');
+const { blendFrames, lerpAngle } = await load('src/model/interp.js');
+const { EventDetector } = await load('src/model/events.js');
+const { normalizeSkeleton } = await load('src/model/skeleton.js');
+
+const frame = (seq, extra = {}) => ({
+  seq, time: seq >> 1, stoppage: 0, playMode: 3, scoreLeft: 0, scoreRight: 0,
+  ball: { x: seq, y: 0, z: 0 },
+  players: [{ side: 1, unum: 1, state: 1, x: seq * 0.1, y: 0, z: 1, heading: 0, angles: Float32Array.of(seq) }],
+  ...extra,
+});
+
+test('the playhead runs a few frames behind the newest and interpolates', () => {
+  const jb = new JitterBuffer({ frameMs: 50, delayFrames: 3 });
+  let now = 0;
+  for (let s = 100; s < 110; s++) { jb.push(frame(s), now); now += 50; }
+  now -= 50;
+  let r = jb.sample(now);
+  assert.ok(Math.abs(jb.playhead - 106) < 1e-9, `playhead ${jb.playhead}`);
+  // Steady arrivals: the playhead advances at the stream's rate.
+  for (let s = 110; s < 130; s++) {
+    now += 50; jb.push(frame(s), now);
+    r = jb.sample(now + 25);
+  }
+  assert.ok(r.b.seq === r.a.seq + 1 && r.t >= 0 && r.t <= 1);
+  assert.ok(jb.lagMs() > 50 && jb.lagMs() < 250, `lag ${jb.lagMs()}`);
+});
+
+test('seq gaps count as dropped; a big jump resyncs', () => {
+  const jb = new JitterBuffer();
+  jb.push(frame(1), 0);
+  jb.push(frame(4), 50);
+  assert.equal(jb.dropped, 2);
+  jb.push(frame(5000), 100);
+  assert.equal(jb.size, 1);
+  assert.equal(jb.resyncs, 1);
+  assert.equal(jb.push(frame(5000), 120), false, 'duplicates are ignored');
+});
+
+test('a frame that arrives late but ahead of the playhead is inserted in order', () => {
+  const jb = new JitterBuffer();
+  jb.push(frame(10), 0);
+  jb.push(frame(12), 50);
+  jb.push(frame(11), 60);
+  assert.deepEqual(jb.frames.map((f) => f.seq), [10, 11, 12]);
+  assert.equal(jb.dropped, 0);
+});
+
+test('a stalled renderer never loses stream frames and catches up by resync', () => {
+  const jb = new JitterBuffer({ capacity: 1000 });
+  for (let s = 0; s < 10; s++) jb.push(frame(s), s * 50);
+  jb.sample(450);
+  for (let s = 10; s < 400; s++) jb.push(frame(s), s * 50);
+  assert.ok(jb.size >= 390, 'every new frame kept while the renderer sleeps');
+  const r = jb.sample(400 * 50);
+  assert.ok(r.a.seq >= 395, `jumped to the present (${r.a.seq})`);
+});
+
+test('interpolation blends positions and angles and turns the short way', () => {
+  const out = blendFrames(frame(10), frame(20), 0.5);
+  assert.equal(out.ball.x, 15);
+  assert.ok(Math.abs(out.players[0].angles[0] - 15) < 1e-6);
+  assert.equal(lerpAngle(170, -170, 0.5), 180);
+  assert.equal(lerpAngle(-10, 10, 0.5), 0);
+});
+
+test('events fire once on their edge', () => {
+  const ev = new EventDetector();
+  assert.deepEqual(ev.step(frame(1)), []);
+  const kick = frame(2);
+  kick.players[0].state = 3;
+  assert.deepEqual(ev.step(kick).map((e) => e.type), ['kick']);
+  const still = frame(3);
+  still.players[0].state = 3;
+  assert.deepEqual(ev.step(still), []);
+  assert.deepEqual(ev.step(frame(4, { playMode: 14, scoreLeft: 1 })).map((e) => e.type), ['goal']);
+  assert.deepEqual(ev.step(frame(5, { playMode: 24 })).map((e) => e.type), ['foul']);
+  const card = frame(6, { playMode: 24 });
+  card.players[0].state = 1 | 0x40000;
+  assert.deepEqual(ev.step(card).map((e) => e.color), ['yellow']);
+});
+
+test('the skeleton is read from the hello and bad ones are refused', () => {
+  const sk = normalizeSkeleton({ joints: [
+    { name: 'pelvis', parent: -1, offset: [0, 0, 0], dofs: 'zxy', segment: { shape: 'box', size: [1, 1, 1], center: [0, 0, 0] } },
+    { name: 'head', parent: 0, offset: [0, 1, 0], dofs: 'y', segment: { shape: 'sphere', size: [0.1, 0, 0], center: [0, 0, 0] } }] });
+  assert.equal(sk.dofCount, 4);
+  assert.equal(sk.joints[1].angleIndex, 3);
+  assert.throws(() => normalizeSkeleton({ joints: [{ parent: 1 }] }));
+  assert.throws(() => normalizeSkeleton({}));
+});
