@@ -1,0 +1,144 @@
+#include "server/tools/loadgen/load_client.hpp"
+
+#include <boost/beast/core/bind_handler.hpp>
+
+namespace beast = boost::beast;
+namespace websocket = beast::websocket;
+namespace net = boost::asio;
+
+namespace mc::loadgen {
+
+double unix_ms_now() {
+  using namespace std::chrono;
+  return duration<double, std::milli>(system_clock::now().time_since_epoch()).count();
+}
+
+void ClientStats::merge(const ClientStats& o) {
+  connected += o.connected;
+  failed += o.failed;
+  closed_by_server += o.closed_by_server;
+  messages += o.messages;
+  bytes += o.bytes;
+  frames += o.frames;
+  gaps += o.gaps;
+  frames_skipped += o.frames_skipped;
+  out_of_order += o.out_of_order;
+  decode_errors += o.decode_errors;
+  if (first_error.empty()) first_error = o.first_error;
+  delay.merge(o.delay);
+}
+
+LoadClient::LoadClient(net::io_context& ioc, ClientOptions options, ClientStats& stats)
+    : options_(std::move(options)), stats_(stats), ws_(ioc), pause_(ioc) {
+  if (options_.decode && options_.skeleton)
+    decoder_ = std::make_unique<proto::FrameDecoder>(*options_.skeleton);
+}
+
+void LoadClient::start() {
+  auto& socket = beast::get_lowest_layer(ws_).socket();
+  beast::error_code ec;
+  socket.open(options_.server.protocol(), ec);
+  if (!ec) socket.bind({options_.source, 0}, ec);
+  if (ec) {
+    note_failure("bind", ec);
+    return;
+  }
+  beast::get_lowest_layer(ws_).expires_after(std::chrono::seconds(30));
+  beast::get_lowest_layer(ws_).async_connect(
+      options_.server, beast::bind_front_handler(&LoadClient::on_connect, shared_from_this()));
+}
+
+void LoadClient::stop() {
+  beast::error_code ec;
+  pause_.cancel();
+  beast::get_lowest_layer(ws_).socket().close(ec);
+}
+
+void LoadClient::note_failure(const char* step, beast::error_code ec) {
+  ++stats_.failed;
+  if (stats_.first_error.empty()) stats_.first_error = std::string(step) + ": " + ec.message();
+}
+
+void LoadClient::on_connect(beast::error_code ec) {
+  if (ec) {
+    note_failure("connect", ec);
+    return;
+  }
+  ws_.async_handshake(options_.host, options_.target,
+                      beast::bind_front_handler(&LoadClient::on_handshake, shared_from_this()));
+}
+
+void LoadClient::on_handshake(beast::error_code ec) {
+  if (ec) {
+    note_failure("handshake", ec);
+    return;
+  }
+  beast::get_lowest_layer(ws_).expires_never();
+  ws_.read_message_max(16 * 1024 * 1024);
+  ++stats_.connected;
+  open_ = true;
+  connected_at_ms_ = static_cast<std::uint64_t>(unix_ms_now());
+  if (options_.behaviour == Behaviour::Stalled) return;  // never reads: the socket fills up
+  do_read();
+}
+
+void LoadClient::do_read() {
+  ws_.async_read(buffer_, beast::bind_front_handler(&LoadClient::on_read, shared_from_this()));
+}
+
+void LoadClient::on_read(beast::error_code ec, std::size_t bytes) {
+  if (ec) {
+    if (open_ && ec != net::error::operation_aborted) ++stats_.closed_by_server;
+    open_ = false;
+    return;
+  }
+  ++stats_.messages;
+  stats_.bytes += bytes;
+  if (ws_.got_binary()) {
+    const auto data = buffer_.data();
+    handle_frame({static_cast<const char*>(data.data()), data.size()});
+  }
+  buffer_.consume(buffer_.size());
+  if (options_.behaviour == Behaviour::Slow) {
+    pause_.expires_after(options_.slow_read_pause);
+    pause_.async_wait([self = shared_from_this()](beast::error_code e) {
+      if (!e) self->do_read();
+    });
+    return;
+  }
+  do_read();
+}
+
+void LoadClient::handle_frame(std::string_view bytes) {
+  const double now = unix_ms_now();
+  ++stats_.frames;
+  proto::FrameHeader header;
+  std::string error;
+  if (!proto::peek_header(bytes, header, error)) {
+    if (stats_.first_error.empty()) stats_.first_error = error;
+    ++stats_.decode_errors;
+    return;
+  }
+  if (have_seq_) {
+    if (header.seq == last_seq_ + 1) {
+      // the normal case
+    } else if (header.seq > last_seq_ + 1) {
+      ++stats_.gaps;
+      stats_.frames_skipped += header.seq - last_seq_ - 1;
+    } else {
+      ++stats_.out_of_order;
+    }
+  }
+  last_seq_ = header.seq;
+  have_seq_ = true;
+  // The catch-up burst at join was stamped before this client existed: its
+  // age says nothing about the relay's delay.
+  if (header.server_time_ms >= connected_at_ms_)
+    stats_.delay.record(now - static_cast<double>(header.server_time_ms));
+  if (decoder_ && !decoder_->decode(bytes, frame_, error)) {
+    if (stats_.first_error.empty()) stats_.first_error = error;
+    ++stats_.decode_errors;
+  }
+}
+
+}  // namespace mc::loadgen

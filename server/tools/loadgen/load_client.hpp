@@ -1,0 +1,80 @@
+// One simulated spectator: connects to the relay over WebSocket, reads every
+// message, checks the frame sequence, measures the delay from the server's
+// stamp to receipt, and decodes each frame as a real client would.
+// It can also behave badly on purpose: read slowly, or stop reading.
+#pragma once
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/websocket.hpp>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "proto/frame_codec.hpp"
+#include "server/tools/loadgen/latency_histogram.hpp"
+
+namespace mc::loadgen {
+
+enum class Behaviour { Healthy, Slow, Stalled };
+
+// Counters of all clients of one behaviour on one thread (no locking: each
+// thread has its own, merged at the end).
+struct ClientStats {
+  std::uint64_t connected = 0, failed = 0, closed_by_server = 0;
+  std::uint64_t messages = 0, bytes = 0, frames = 0;
+  std::uint64_t gaps = 0;            // a seq jump (frames skipped by the relay)
+  std::uint64_t frames_skipped = 0;  // sum of the jumps
+  std::uint64_t out_of_order = 0;    // seq went backwards or repeated
+  std::uint64_t decode_errors = 0;
+  std::string first_error;           // the first connect or decode error, for the report
+  LatencyHistogram delay;
+
+  void merge(const ClientStats& o);
+};
+
+struct ClientOptions {
+  boost::asio::ip::tcp::endpoint server;
+  boost::asio::ip::address source;  // local address to bind (spreads ports over 127.x)
+  std::string host = "127.0.0.1";
+  std::string target = "/ws";
+  Behaviour behaviour = Behaviour::Healthy;
+  std::chrono::milliseconds slow_read_pause{200};  // Slow: pause between reads
+  bool decode = true;                               // full decode, or header only
+  const SkeletonDef* skeleton = nullptr;            // from the hello
+};
+
+class LoadClient : public std::enable_shared_from_this<LoadClient> {
+ public:
+  LoadClient(boost::asio::io_context& ioc, ClientOptions options, ClientStats& stats);
+  void start();
+  void stop();
+
+ private:
+  void note_failure(const char* step, boost::beast::error_code ec);
+  void on_connect(boost::beast::error_code ec);
+  void on_handshake(boost::beast::error_code ec);
+  void do_read();
+  void on_read(boost::beast::error_code ec, std::size_t bytes);
+  void handle_frame(std::string_view bytes);
+
+  ClientOptions options_;
+  ClientStats& stats_;
+  boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
+  boost::beast::flat_buffer buffer_;
+  boost::asio::steady_timer pause_;
+  std::unique_ptr<proto::FrameDecoder> decoder_;
+  PoseFrame frame_;
+  std::uint64_t connected_at_ms_ = 0;
+  std::uint32_t last_seq_ = 0;
+  bool have_seq_ = false;
+  bool open_ = false;
+};
+
+// Unix time in ms with sub-ms precision, the clock the server stamps with.
+double unix_ms_now();
+
+}  // namespace mc::loadgen
