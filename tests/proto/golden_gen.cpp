@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "proto/control_messages.hpp"
+#include "server/record/recording_writer.hpp"
 #include "tests/proto/support/golden_frames.hpp"
 
 using nlohmann::json;
@@ -50,6 +52,7 @@ json expected(const PoseFrame& f, bool key, int dofs) {
 int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : std::string(MATCHCAST_SOURCE_DIR) + "/tests/proto/golden";
   const Hello hello = testing::golden_hello();
+  std::string error_out;
   const auto frames = testing::golden_frames(hello.skeleton);
   FrameEncoder enc(hello.skeleton, {hello.keyframe_interval});
   FrameDecoder dec(hello.skeleton);
@@ -99,6 +102,21 @@ int main(int argc, char** argv) {
   file << "]}\n";
   if (!file) {
     std::cerr << "golden_gen: cannot write " << dir << "/frames_v1.json\n";
+    return 1;
+  }
+  // The golden recording: the same frames, a kick and a goal event.
+  mc::record::RecordingWriter writer;
+  if (!writer.open(dir + "/recording_v1.mcrec", to_json(hello), error_out, {8, false})) {
+    std::cerr << "golden_gen: " << error_out << "\n";
+    return 1;
+  }
+  for (std::size_t i = 0; i < encoded.size(); ++i) {
+    writer.add_frame(encoded[i], error_out);
+    if (i == 3) writer.add_control(to_json(ControlMessage{KickEvent{3, 1, Side::Left, 4, Foot::Right, 150}}), error_out);
+    if (i == 14) writer.add_control(to_json(ControlMessage{GoalEvent{14, 7, Side::Left, 1, 0}}), error_out);
+  }
+  if (!writer.close(error_out)) {
+    std::cerr << "golden_gen: " << error_out << "\n";
     return 1;
   }
   std::cout << "wrote " << frames.size() << " frames and " << bad.size() << " bad frames to " << dir << "\n";

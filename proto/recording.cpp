@@ -1,0 +1,276 @@
+#include "proto/recording.hpp"
+
+#include <array>
+
+namespace mc::proto::rec {
+namespace {
+
+constexpr char kMagic[6] = {'M', 'C', 'R', 'E', 'C', '\0'};
+constexpr char kTrailerMagic[8] = {'M', 'C', 'I', 'N', 'D', 'E', 'X', '\0'};
+constexpr std::size_t kChunkHeaderSize = 20;
+constexpr std::size_t kIndexEntrySize = 24;
+
+void put(std::string& out, std::uint64_t v, int bytes) {
+  for (int i = 0; i < bytes; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xffu));
+}
+std::uint64_t get(std::string_view in, std::size_t at, int bytes) {
+  std::uint64_t v = 0;
+  for (int i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(in[at + static_cast<std::size_t>(i)])) << (8 * i);
+  return v;
+}
+void put_varint(std::string& out, std::uint32_t v) {
+  while (v >= 0x80) {
+    out.push_back(static_cast<char>((v & 0x7f) | 0x80));
+    v >>= 7;
+  }
+  out.push_back(static_cast<char>(v));
+}
+// False when the varint runs past `in` or exceeds 32 bits.
+bool get_varint(std::string_view in, std::size_t& at, std::uint32_t& v) {
+  v = 0;
+  for (int shift = 0; shift < 35; shift += 7) {
+    if (at >= in.size()) return false;
+    const auto b = static_cast<unsigned char>(in[at++]);
+    v |= static_cast<std::uint32_t>(b & 0x7f) << shift;
+    if ((b & 0x80) == 0) return shift < 28 || (b >> 4) == 0;
+  }
+  return false;
+}
+
+void put_chunk_info(std::string& out, const ChunkInfo& c) {
+  put(out, c.first_seq, 4);
+  put(out, static_cast<std::uint32_t>(c.first_time), 4);
+  put(out, static_cast<std::uint16_t>(c.first_stoppage), 2);
+  put(out, c.first_substep, 1);
+  put(out, c.starts_with_keyframe ? 1u : 0u, 1);
+  put(out, c.frame_count, 4);
+}
+void get_chunk_info(std::string_view in, std::size_t at, ChunkInfo& c) {
+  c.first_seq = static_cast<std::uint32_t>(get(in, at, 4));
+  c.first_time = static_cast<int>(static_cast<std::int32_t>(get(in, at + 4, 4)));
+  c.first_stoppage = static_cast<int>(get(in, at + 8, 2));
+  c.first_substep = static_cast<std::uint8_t>(get(in, at + 10, 1));
+  c.starts_with_keyframe = (get(in, at + 11, 1) & 1u) != 0;
+  c.frame_count = static_cast<std::uint32_t>(get(in, at + 12, 4));
+}
+
+const std::array<std::uint32_t, 256>& crc_table() {
+  static const std::array<std::uint32_t, 256> table = [] {
+    std::array<std::uint32_t, 256> t{};
+    for (std::uint32_t i = 0; i < 256; ++i) {
+      std::uint32_t c = i;
+      for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+      t[i] = c;
+    }
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
+std::uint32_t crc32(std::string_view bytes, std::uint32_t crc) {
+  const auto& t = crc_table();
+  crc = ~crc;
+  for (unsigned char b : bytes) crc = t[(crc ^ b) & 0xffu] ^ (crc >> 8);
+  return ~crc;
+}
+
+std::string encode_file_header(const FileHeader& h) {
+  std::string out(kMagic, sizeof kMagic);
+  out.push_back(static_cast<char>(h.major));
+  out.push_back(static_cast<char>(h.minor));
+  put(out, h.created_unix_ms, 8);
+  return out;
+}
+
+bool parse_file_header(std::string_view bytes, FileHeader& out, std::string& error) {
+  if (bytes.size() < kFileHeaderSize) {
+    error = "recording truncated: no complete file header";
+    return false;
+  }
+  if (bytes.substr(0, sizeof kMagic) != std::string_view(kMagic, sizeof kMagic)) {
+    error = "not a Matchcast recording (bad magic)";
+    return false;
+  }
+  out.major = static_cast<std::uint8_t>(bytes[6]);
+  out.minor = static_cast<std::uint8_t>(bytes[7]);
+  out.created_unix_ms = get(bytes, 8, 8);
+  if (out.major != kFormatMajor) {
+    error = "unsupported recording format major version " + std::to_string(out.major) + " (this reader reads " +
+            std::to_string(kFormatMajor) + ")";
+    return false;
+  }
+  return true;
+}
+
+std::string encode_record(RecordType type, std::string_view payload) {
+  std::string out;
+  out.reserve(payload.size() + kRecordOverhead);
+  put(out, payload.size(), 4);
+  out.push_back(static_cast<char>(type));
+  out.append(payload);
+  put(out, crc32(std::string_view(out).substr(4)), 4);
+  return out;
+}
+
+std::size_t record_size_hint(std::string_view bytes) {
+  if (bytes.size() < 4) return 0;
+  return static_cast<std::size_t>(get(bytes, 0, 4)) + kRecordOverhead;
+}
+
+RecordStatus parse_record(std::string_view bytes, RecordView& out, std::string& error) {
+  if (bytes.size() < 5) {
+    error = "record truncated in its header";
+    return RecordStatus::Truncated;
+  }
+  const auto length = static_cast<std::uint32_t>(get(bytes, 0, 4));
+  if (length > kMaxRecordPayload) {
+    error = "corrupt record: length " + std::to_string(length);
+    return RecordStatus::Corrupt;
+  }
+  const std::size_t total = length + kRecordOverhead;
+  if (bytes.size() < total) {
+    error = "record truncated: " + std::to_string(bytes.size()) + " of " + std::to_string(total) + " bytes";
+    return RecordStatus::Truncated;
+  }
+  const auto type = static_cast<unsigned char>(bytes[4]);
+  if (type < 1 || type > 3) {
+    error = "corrupt record: unknown type " + std::to_string(type);
+    return RecordStatus::Corrupt;
+  }
+  if (crc32(bytes.substr(4, 1 + length)) != static_cast<std::uint32_t>(get(bytes, 5 + length, 4))) {
+    error = "corrupt record: CRC mismatch";
+    return RecordStatus::Corrupt;
+  }
+  out.type = static_cast<RecordType>(type);
+  out.payload = bytes.substr(5, length);
+  out.total_size = total;
+  return RecordStatus::Ok;
+}
+
+void ChunkBuilder::add(ChunkEntry::Kind kind, std::string_view bytes) {
+  body_.push_back(static_cast<char>(kind));
+  put_varint(body_, static_cast<std::uint32_t>(bytes.size()));
+  body_.append(bytes);
+  ++entries_;
+}
+
+bool ChunkBuilder::add_frame(std::string_view frame, std::string& error) {
+  FrameHeader h;
+  if (!peek_header(frame, h, error)) return false;
+  if (info_.frame_count == 0) {
+    info_.first_seq = h.seq;
+    info_.first_time = h.time;
+    info_.first_stoppage = h.stoppage;
+    info_.first_substep = h.substep;
+    info_.starts_with_keyframe = h.keyframe;
+  }
+  ++info_.frame_count;
+  add(ChunkEntry::Kind::Frame, frame);
+  return true;
+}
+
+void ChunkBuilder::add_control(std::string_view json_text) { add(ChunkEntry::Kind::Control, json_text); }
+
+std::string ChunkBuilder::finish(ChunkInfo& info) {
+  std::string payload;
+  payload.reserve(kChunkHeaderSize + body_.size());
+  put_chunk_info(payload, info_);
+  put(payload, entries_, 4);
+  payload += body_;
+  info = info_;
+  body_.clear();
+  entries_ = 0;
+  info_ = ChunkInfo{};
+  return encode_record(RecordType::Chunk, payload);
+}
+
+bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEntry>& entries, std::string& error) {
+  entries.clear();
+  if (payload.size() < kChunkHeaderSize) {
+    error = "corrupt chunk: shorter than its header";
+    return false;
+  }
+  get_chunk_info(payload, 0, info);
+  const auto count = static_cast<std::uint32_t>(get(payload, 16, 4));
+  std::size_t at = kChunkHeaderSize;
+  std::uint32_t frames = 0;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (at >= payload.size()) {
+      error = "corrupt chunk: entry " + std::to_string(i) + " missing";
+      return false;
+    }
+    const auto kind = static_cast<unsigned char>(payload[at++]);
+    std::uint32_t len = 0;
+    if ((kind != 1 && kind != 2) || !get_varint(payload, at, len) || len > payload.size() - at) {
+      error = "corrupt chunk: bad entry " + std::to_string(i);
+      return false;
+    }
+    entries.push_back({static_cast<ChunkEntry::Kind>(kind), payload.substr(at, len)});
+    frames += kind == 1;
+    at += len;
+  }
+  if (at != payload.size() || frames != info.frame_count) {
+    error = "corrupt chunk: entry count does not match its contents";
+    return false;
+  }
+  return true;
+}
+
+std::string encode_index(const std::vector<ChunkInfo>& chunks) {
+  std::string payload;
+  payload.reserve(4 + chunks.size() * kIndexEntrySize);
+  put(payload, chunks.size(), 4);
+  for (const auto& c : chunks) {
+    put(payload, c.offset, 8);
+    put_chunk_info(payload, c);
+  }
+  return encode_record(RecordType::Index, payload);
+}
+
+bool parse_index(std::string_view payload, std::vector<ChunkInfo>& out, std::string& error) {
+  out.clear();
+  if (payload.size() < 4 || (payload.size() - 4) % kIndexEntrySize != 0 ||
+      get(payload, 0, 4) != (payload.size() - 4) / kIndexEntrySize) {
+    error = "corrupt index: size does not match its count";
+    return false;
+  }
+  for (std::size_t at = 4; at < payload.size(); at += kIndexEntrySize) {
+    ChunkInfo c;
+    c.offset = get(payload, at, 8);
+    get_chunk_info(payload, at + 8, c);
+    out.push_back(c);
+  }
+  return true;
+}
+
+std::string encode_trailer(std::uint64_t index_offset) {
+  std::string out(kTrailerMagic, sizeof kTrailerMagic);
+  put(out, index_offset, 8);
+  return out;
+}
+
+bool parse_trailer(std::string_view last16, std::uint64_t& index_offset) {
+  if (last16.size() != kTrailerSize || last16.substr(0, 8) != std::string_view(kTrailerMagic, 8)) return false;
+  index_offset = get(last16, 8, 8);
+  return true;
+}
+
+std::size_t find_chunk(const std::vector<ChunkInfo>& chunks, int time, int stoppage) {
+  if (chunks.empty()) return 0;
+  // Binary search on (first_time, first_stoppage): chunks are in stream order.
+  std::size_t lo = 0, hi = chunks.size();
+  while (hi - lo > 1) {
+    const std::size_t mid = (lo + hi) / 2;
+    const auto& c = chunks[mid];
+    if (c.first_time < time || (c.first_time == time && (c.first_stoppage < stoppage ||
+                                                          (c.first_stoppage == stoppage && c.first_substep == 0))))
+      lo = mid;
+    else hi = mid;
+  }
+  while (lo > 0 && !chunks[lo].starts_with_keyframe) --lo;
+  return lo;
+}
+
+}  // namespace mc::proto::rec

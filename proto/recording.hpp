@@ -1,0 +1,113 @@
+// The recording format, in memory (no I/O: server/record/ does the file
+// work). SPEC.md section 6 is the normative description.
+//
+// A recording is the stream itself, cut into records that a reader can
+// check one by one, so that a file cut anywhere (crash, SIGKILL) is still
+// readable up to its last complete record:
+//
+//   file header (16 B) | hello record | chunk record | chunk record | ...
+//   | index record | trailer (16 B)          <- only after a clean close
+//
+//   record  = u32 payload length | u8 type | payload | u32 CRC-32(type, payload)
+//   chunk   = the frames (and control messages, in stream order) of about
+//             one keyframe interval, normally starting with a keyframe
+//   index   = where each chunk starts and its first frame's seq/time
+//   trailer = "MCINDEX\0" | u64 offset of the index record
+//
+// All integers little-endian.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "proto/frame_header.hpp"
+
+namespace mc::proto::rec {
+
+inline constexpr std::uint8_t kFormatMajor = 1;  // readers refuse other majors
+inline constexpr std::uint8_t kFormatMinor = 0;
+inline constexpr std::size_t kFileHeaderSize = 16;
+inline constexpr std::size_t kRecordOverhead = 9;   // length + type + CRC
+inline constexpr std::size_t kTrailerSize = 16;
+// A record longer than this is corruption (a chunk of 1 s is ~10 KB).
+inline constexpr std::uint32_t kMaxRecordPayload = 64u << 20;
+
+enum class RecordType : std::uint8_t { Hello = 1, Chunk = 2, Index = 3 };
+
+struct FileHeader {
+  std::uint8_t major = kFormatMajor, minor = kFormatMinor;
+  std::uint64_t created_unix_ms = 0;
+};
+std::string encode_file_header(const FileHeader& header);
+// False + error for a short input, a wrong magic or an unknown major.
+bool parse_file_header(std::string_view bytes, FileHeader& out, std::string& error);
+
+std::uint32_t crc32(std::string_view bytes, std::uint32_t crc = 0);
+
+std::string encode_record(RecordType type, std::string_view payload);
+
+enum class RecordStatus { Ok, Truncated, Corrupt };
+struct RecordView {
+  RecordType type = RecordType::Hello;
+  std::string_view payload;
+  std::size_t total_size = 0;  // bytes the record occupies, overhead included
+};
+// Parses the record at the start of `bytes`. Truncated: `bytes` ends inside
+// it (a crash while writing). Corrupt: bad length, unknown type or CRC.
+RecordStatus parse_record(std::string_view bytes, RecordView& out, std::string& error);
+// How many bytes the record at the start of `bytes` needs in total, from its
+// length field alone (0 when fewer than 4 bytes are given).
+std::size_t record_size_hint(std::string_view bytes);
+
+// What the index knows about one chunk.
+struct ChunkInfo {
+  std::uint64_t offset = 0;       // file offset of the chunk record
+  std::uint32_t first_seq = 0;
+  int first_time = 0;             // simulation cycle of the first frame
+  int first_stoppage = 0;
+  std::uint8_t first_substep = 0;
+  bool starts_with_keyframe = false;
+  std::uint32_t frame_count = 0;
+};
+
+struct ChunkEntry {
+  enum class Kind : std::uint8_t { Frame = 1, Control = 2 } kind = Kind::Frame;
+  std::string_view bytes;  // an encoded pose frame, or a JSON control message
+};
+
+// Collects one chunk. Frames and control messages keep their order.
+class ChunkBuilder {
+ public:
+  // `frame` must be a valid encoded frame (its header is read); false + error otherwise.
+  bool add_frame(std::string_view frame, std::string& error);
+  void add_control(std::string_view json_text);
+  bool empty() const { return entries_ == 0; }
+  std::uint32_t frame_count() const { return info_.frame_count; }
+  // The chunk record (offset in `info` is left to the caller), and a reset.
+  std::string finish(ChunkInfo& info);
+
+ private:
+  void add(ChunkEntry::Kind kind, std::string_view bytes);
+  std::string body_;
+  std::uint32_t entries_ = 0;
+  ChunkInfo info_;
+};
+
+// Parses a chunk payload; false + error when it is malformed.
+bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEntry>& entries, std::string& error);
+
+std::string encode_index(const std::vector<ChunkInfo>& chunks);  // the index record
+bool parse_index(std::string_view payload, std::vector<ChunkInfo>& out, std::string& error);
+std::string encode_trailer(std::uint64_t index_offset);
+// False when the last 16 bytes of a file are not a trailer.
+bool parse_trailer(std::string_view last16, std::uint64_t& index_offset);
+
+// The chunk to start decoding from to reach simulation time `time` (and
+// `stoppage`): the last chunk starting with a keyframe whose first frame is
+// at or before it; 0 when the time is before the first chunk or `chunks`
+// is empty. `chunks` in file order.
+std::size_t find_chunk(const std::vector<ChunkInfo>& chunks, int time, int stoppage = 0);
+
+}  // namespace mc::proto::rec

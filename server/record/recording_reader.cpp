@@ -1,0 +1,211 @@
+#include "server/record/recording_reader.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace mc::record {
+
+namespace rec = proto::rec;
+
+RecordingReader::~RecordingReader() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+bool RecordingReader::read_at(std::uint64_t offset, std::size_t size, std::string& out, std::string& error) const {
+  out.resize(size);
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t n = ::pread(fd_, out.data() + done, size - done, static_cast<off_t>(offset + done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      error = "cannot read recording " + path_ + ": " + std::strerror(errno);
+      return false;
+    }
+    if (n == 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  out.resize(done);
+  return true;
+}
+
+bool RecordingReader::open(const std::string& path, std::string& error) {
+  if (fd_ >= 0) ::close(fd_);
+  hello_json_.clear();
+  decoder_.reset();
+  chunks_.clear();
+  recovered_ = false;
+  ignored_tail_ = 0;
+  skipped_frames_ = 0;
+  rewind();
+  fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd_ < 0) {
+    error = "cannot open recording " + path + ": " + std::strerror(errno);
+    return false;
+  }
+  path_ = path;
+  struct stat st {};
+  if (::fstat(fd_, &st) != 0) {
+    error = "cannot stat recording " + path + ": " + std::strerror(errno);
+    return false;
+  }
+  const auto file_size = static_cast<std::uint64_t>(st.st_size);
+
+  std::string head;
+  if (!read_at(0, rec::kFileHeaderSize + 4, head, error)) return false;
+  rec::FileHeader header;
+  if (!rec::parse_file_header(head, header, error)) {
+    error = path + ": " + error;
+    return false;
+  }
+  // The hello record follows the file header.
+  const std::size_t hello_size = rec::record_size_hint(std::string_view(head).substr(rec::kFileHeaderSize));
+  std::string hello_bytes;
+  rec::RecordView view;
+  if (hello_size == 0 || hello_size > rec::kMaxRecordPayload ||
+      !read_at(rec::kFileHeaderSize, hello_size, hello_bytes, error) ||
+      rec::parse_record(hello_bytes, view, error) != rec::RecordStatus::Ok || view.type != rec::RecordType::Hello) {
+    error = path + ": no valid hello record" + (error.empty() ? "" : " (" + error + ")");
+    return false;
+  }
+  hello_json_ = std::string(view.payload);
+  if (!proto::hello_from_json(hello_json_, hello_, error)) {
+    error = path + ": " + error;
+    return false;
+  }
+  decoder_.emplace(hello_.skeleton);
+  data_start_ = rec::kFileHeaderSize + hello_size;
+
+  if (!load_index(file_size)) {
+    recovered_ = true;
+    if (!scan(data_start_, file_size, error)) return false;
+  }
+  return true;
+}
+
+bool RecordingReader::load_index(std::uint64_t file_size) {
+  if (file_size < data_start_ + rec::kTrailerSize) return false;
+  std::string tail, err;
+  std::uint64_t index_offset = 0;
+  if (!read_at(file_size - rec::kTrailerSize, rec::kTrailerSize, tail, err) || !rec::parse_trailer(tail, index_offset))
+    return false;
+  if (index_offset < data_start_ || index_offset > file_size - rec::kTrailerSize) return false;
+  std::string bytes;
+  if (!read_at(index_offset, static_cast<std::size_t>(file_size - rec::kTrailerSize - index_offset), bytes, err))
+    return false;
+  rec::RecordView view;
+  std::vector<rec::ChunkInfo> chunks;
+  if (rec::parse_record(bytes, view, err) != rec::RecordStatus::Ok || view.type != rec::RecordType::Index ||
+      view.total_size != bytes.size() || !rec::parse_index(view.payload, chunks, err))
+    return false;
+  for (const auto& c : chunks)
+    if (c.offset < data_start_ || c.offset >= index_offset) return false;
+  chunks_ = std::move(chunks);
+  return true;
+}
+
+bool RecordingReader::scan(std::uint64_t from, std::uint64_t file_size, std::string& error) {
+  chunks_.clear();
+  std::uint64_t at = from;
+  std::string bytes, err;
+  std::vector<rec::ChunkEntry> entries;
+  while (at < file_size) {
+    std::string len;
+    if (!read_at(at, 4, len, error)) return false;
+    const std::size_t size = rec::record_size_hint(len);
+    rec::RecordView view;
+    if (size == 0 || size > rec::kMaxRecordPayload + rec::kRecordOverhead || !read_at(at, size, bytes, error) ||
+        rec::parse_record(bytes, view, err) != rec::RecordStatus::Ok)
+      break;  // the unfinished (or damaged) end: keep what came before
+    if (view.type == rec::RecordType::Index) break;  // an index without a valid trailer: the data ends here
+    if (view.type == rec::RecordType::Chunk) {
+      rec::ChunkInfo info;
+      if (!rec::parse_chunk(view.payload, info, entries, err)) break;
+      info.offset = at;
+      chunks_.push_back(info);
+    }
+    at += size;
+  }
+  ignored_tail_ = file_size - at;
+  return true;
+}
+
+std::uint64_t RecordingReader::frame_count() const {
+  std::uint64_t n = 0;
+  for (const auto& c : chunks_) n += c.frame_count;
+  return n;
+}
+
+bool RecordingReader::load_chunk(std::size_t index, std::string& error) {
+  const rec::ChunkInfo& c = chunks_[index];
+  std::string len;
+  if (!read_at(c.offset, 4, len, error)) return false;
+  const std::size_t size = rec::record_size_hint(len);
+  rec::RecordView view;
+  if (size == 0 || size > rec::kMaxRecordPayload + rec::kRecordOverhead || !read_at(c.offset, size, chunk_bytes_, error) ||
+      rec::parse_record(chunk_bytes_, view, error) != rec::RecordStatus::Ok || view.type != rec::RecordType::Chunk) {
+    error = path_ + ": damaged chunk at offset " + std::to_string(c.offset) + (error.empty() ? "" : ": " + error);
+    return false;
+  }
+  rec::ChunkInfo info;
+  if (!rec::parse_chunk(view.payload, info, entries_, error)) {
+    error = path_ + ": " + error;
+    return false;
+  }
+  chunk_ = index;
+  chunk_loaded_ = true;
+  entry_ = 0;
+  return true;
+}
+
+void RecordingReader::rewind() {
+  chunk_ = 0;
+  chunk_loaded_ = false;
+  entry_ = 0;
+}
+
+bool RecordingReader::next(PoseFrame& out, std::string& error, std::vector<std::string>* controls) {
+  error.clear();
+  if (!decoder_) {
+    error = "recording is not open";
+    return false;
+  }
+  for (;;) {
+    if (!chunk_loaded_ || entry_ >= entries_.size()) {
+      const std::size_t next_chunk = chunk_loaded_ ? chunk_ + 1 : chunk_;
+      if (next_chunk >= chunks_.size()) return false;  // the end
+      if (!load_chunk(next_chunk, error)) return false;
+      continue;
+    }
+    const rec::ChunkEntry& e = entries_[entry_++];
+    if (e.kind == rec::ChunkEntry::Kind::Control) {
+      if (controls) controls->emplace_back(e.bytes);
+      continue;
+    }
+    if (decoder_->decode(e.bytes, out, error)) return true;
+    // A frame that does not decode (a delta whose base was in a damaged
+    // chunk): skip to the next keyframe, as a live client would.
+    ++skipped_frames_;
+    error.clear();
+  }
+}
+
+bool RecordingReader::seek(int time, PoseFrame& out, std::string& error, int stoppage) {
+  if (chunks_.empty()) {
+    error = path_ + ": the recording holds no frames";
+    return false;
+  }
+  *decoder_ = proto::FrameDecoder(hello_.skeleton);
+  if (!load_chunk(rec::find_chunk(chunks_, time, stoppage), error)) return false;
+  while (next(out, error)) {
+    if (out.time > time || (out.time == time && out.stoppage >= stoppage)) return true;
+  }
+  if (error.empty())
+    error = "time " + std::to_string(time) + " is after the end of the recording";
+  return false;
+}
+
+}  // namespace mc::record

@@ -1,0 +1,81 @@
+// Reads a recording file (proto/recording.hpp): the hello, then frames in
+// order or from any simulation time.
+//
+// A file without its index (the writer was killed) is recovered by walking
+// its records from the start and stopping at the first incomplete or
+// corrupt one; everything before it is used. Reads use pread() on demand,
+// so a seek touches the index (in memory) and one or two chunks only.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "proto/frame_codec.hpp"
+#include "proto/hello.hpp"
+#include "proto/recording.hpp"
+
+namespace mc::record {
+
+class RecordingReader {
+ public:
+  RecordingReader() = default;
+  ~RecordingReader();
+  RecordingReader(const RecordingReader&) = delete;
+  RecordingReader& operator=(const RecordingReader&) = delete;
+
+  // False + error when the file cannot be read, is not a recording, has an
+  // unknown major version, or lacks a valid hello. A missing or damaged
+  // index is not an error: see recovered().
+  bool open(const std::string& path, std::string& error);
+
+  const proto::Hello& hello() const { return hello_; }
+  const std::string& hello_json() const { return hello_json_; }
+  const std::vector<proto::rec::ChunkInfo>& chunks() const { return chunks_; }
+  std::uint64_t frame_count() const;
+  // True when the index was rebuilt by scanning (the file was not closed).
+  bool recovered() const { return recovered_; }
+  // Bytes at the end of the file that were ignored (an unfinished record).
+  std::uint64_t ignored_tail_bytes() const { return ignored_tail_; }
+  // Frames next() skipped because they did not decode (waiting for a keyframe).
+  std::uint64_t skipped_frames() const { return skipped_frames_; }
+
+  // Positions at the first frame at or after simulation time `time`
+  // (`stoppage` for the shows repeated during stoppages) and decodes it
+  // into `out`. False + error when the time is after the last frame or the
+  // data is damaged. next() continues from there.
+  bool seek(int time, PoseFrame& out, std::string& error, int stoppage = 0);
+  // The next frame in stream order, and the control messages (JSON text)
+  // recorded between the previous frame and this one. False at the end
+  // (error empty) or on damaged data (error set).
+  bool next(PoseFrame& out, std::string& error, std::vector<std::string>* controls = nullptr);
+  // Back to the first frame.
+  void rewind();
+
+ private:
+  bool read_at(std::uint64_t offset, std::size_t size, std::string& out, std::string& error) const;
+  bool load_index(std::uint64_t file_size);
+  bool scan(std::uint64_t from, std::uint64_t file_size, std::string& error);
+  bool load_chunk(std::size_t index, std::string& error);
+
+  int fd_ = -1;
+  std::string path_;
+  std::string hello_json_;
+  proto::Hello hello_;
+  std::optional<proto::FrameDecoder> decoder_;
+  std::vector<proto::rec::ChunkInfo> chunks_;
+  bool recovered_ = false;
+  std::uint64_t ignored_tail_ = 0;
+  std::uint64_t skipped_frames_ = 0;
+  std::uint64_t data_start_ = 0;  // offset of the first chunk record
+
+  // Cursor: the loaded chunk and the next entry in it.
+  std::size_t chunk_ = 0;
+  bool chunk_loaded_ = false;
+  std::string chunk_bytes_;
+  std::vector<proto::rec::ChunkEntry> entries_;
+  std::size_t entry_ = 0;
+};
+
+}  // namespace mc::record

@@ -1,0 +1,115 @@
+// The recording format in memory (proto/recording.hpp).
+#include "proto/recording.hpp"
+
+#include <gtest/gtest.h>
+
+#include "proto/frame_codec.hpp"
+#include "tests/proto/support/synthetic.hpp"
+
+namespace mc::proto::rec {
+namespace {
+
+TEST(RecordingFormat, FileHeaderRoundTripsAndRefusesOtherMajors) {
+  FileHeader h;
+  h.created_unix_ms = 1763785000123ull;
+  std::string bytes = encode_file_header(h);
+  ASSERT_EQ(bytes.size(), kFileHeaderSize);
+  FileHeader back;
+  std::string error;
+  ASSERT_TRUE(parse_file_header(bytes, back, error)) << error;
+  EXPECT_EQ(back.created_unix_ms, h.created_unix_ms);
+  bytes[6] = 9;
+  EXPECT_FALSE(parse_file_header(bytes, back, error));
+  EXPECT_NE(error.find("unsupported recording format major version 9"), std::string::npos) << error;
+  EXPECT_FALSE(parse_file_header("MCREC", back, error));
+  EXPECT_FALSE(parse_file_header("XXXXXXXXXXXXXXXXXXXX", back, error));
+  EXPECT_NE(error.find("magic"), std::string::npos);
+}
+
+TEST(RecordingFormat, RecordsDetectTruncationAndCorruption) {
+  const std::string rec = encode_record(RecordType::Hello, "{\"type\":\"hello\"}");
+  RecordView v;
+  std::string error;
+  ASSERT_EQ(parse_record(rec, v, error), RecordStatus::Ok) << error;
+  EXPECT_EQ(v.payload, "{\"type\":\"hello\"}");
+  EXPECT_EQ(v.total_size, rec.size());
+  EXPECT_EQ(record_size_hint(rec), rec.size());
+  for (std::size_t n = 0; n < rec.size(); ++n)
+    EXPECT_EQ(parse_record(std::string_view(rec).substr(0, n), v, error), RecordStatus::Truncated) << n;
+  for (std::size_t i = 4; i < rec.size(); ++i) {  // any flipped bit after the length is caught
+    std::string bad = rec;
+    bad[i] = static_cast<char>(bad[i] ^ 0x10);
+    EXPECT_EQ(parse_record(bad, v, error), RecordStatus::Corrupt) << i;
+  }
+  EXPECT_EQ(crc32("123456789"), 0xCBF43926u);  // the standard check value
+}
+
+TEST(RecordingFormat, ChunksKeepFramesAndControlsInOrder) {
+  const SkeletonDef s = testing::humanoid_skeleton();
+  const auto frames = testing::scripted_frames(s, 5);
+  FrameEncoder enc(s);
+  ChunkBuilder b;
+  std::vector<std::string> encoded;
+  std::string error;
+  for (const auto& f : frames) {
+    bool key = false;
+    encoded.push_back(enc.encode(f, key));
+    ASSERT_TRUE(b.add_frame(encoded.back(), error)) << error;
+    if (f.seq == 2) b.add_control(R"({"type":"kick"})");
+  }
+  EXPECT_FALSE(b.add_frame("junk", error));
+  ChunkInfo info;
+  const std::string record = b.finish(info);
+  EXPECT_TRUE(b.empty());
+  EXPECT_EQ(info.frame_count, 5u);
+  EXPECT_TRUE(info.starts_with_keyframe);
+  RecordView v;
+  ASSERT_EQ(parse_record(record, v, error), RecordStatus::Ok);
+  ASSERT_EQ(v.type, RecordType::Chunk);
+  ChunkInfo parsed;
+  std::vector<ChunkEntry> entries;
+  ASSERT_TRUE(parse_chunk(v.payload, parsed, entries, error)) << error;
+  ASSERT_EQ(entries.size(), 6u);
+  EXPECT_EQ(entries[3].kind, ChunkEntry::Kind::Control);
+  EXPECT_EQ(entries[3].bytes, R"({"type":"kick"})");
+  EXPECT_EQ(entries[4].bytes, encoded[3]);
+  EXPECT_EQ(parsed.first_seq, frames[0].seq);
+  // A chunk payload cut anywhere is refused, never over-read.
+  for (std::size_t n = 0; n < v.payload.size(); ++n)
+    EXPECT_FALSE(parse_chunk(v.payload.substr(0, n), parsed, entries, error)) << n;
+}
+
+TEST(RecordingFormat, IndexAndTrailerRoundTrip) {
+  std::vector<ChunkInfo> chunks;
+  for (int i = 0; i < 5; ++i) chunks.push_back({100u + 1000u * static_cast<unsigned>(i), 20u * static_cast<unsigned>(i), 10 * i, 0, 0, true, 20});
+  const std::string rec = encode_index(chunks);
+  RecordView v;
+  std::string error;
+  ASSERT_EQ(parse_record(rec, v, error), RecordStatus::Ok);
+  std::vector<ChunkInfo> back;
+  ASSERT_TRUE(parse_index(v.payload, back, error)) << error;
+  ASSERT_EQ(back.size(), 5u);
+  EXPECT_EQ(back[3].offset, 3100u);
+  EXPECT_EQ(back[3].first_time, 30);
+  EXPECT_FALSE(parse_index(v.payload.substr(0, 10), back, error));
+  std::uint64_t off = 0;
+  EXPECT_TRUE(parse_trailer(encode_trailer(12345), off));
+  EXPECT_EQ(off, 12345u);
+  EXPECT_FALSE(parse_trailer("not a trailer....", off));
+}
+
+TEST(RecordingFormat, FindChunkPicksTheLastKeyframeChunkAtOrBefore) {
+  std::vector<ChunkInfo> c = {{0, 0, 0, 0, 0, true, 20}, {0, 20, 10, 0, 0, true, 20}, {0, 40, 20, 0, 0, false, 20},
+                              {0, 60, 30, 0, 0, true, 20}, {0, 80, 30, 5, 0, true, 20}};
+  EXPECT_EQ(find_chunk(c, -5), 0u);
+  EXPECT_EQ(find_chunk(c, 0), 0u);
+  EXPECT_EQ(find_chunk(c, 15), 1u);
+  EXPECT_EQ(find_chunk(c, 25), 1u);  // chunk 2 does not start with a keyframe
+  EXPECT_EQ(find_chunk(c, 30), 3u);
+  EXPECT_EQ(find_chunk(c, 30, 7), 4u);  // a stoppage (repeated time)
+  EXPECT_EQ(find_chunk(c, 1000), 4u);
+  EXPECT_EQ(find_chunk({}, 3), 0u);
+}
+
+}  // namespace
+}  // namespace mc::proto::rec
