@@ -4,6 +4,7 @@
 // go through std::from_chars (handles "-0", exponents; no locale, no copies).
 #pragma once
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -12,13 +13,23 @@
 namespace mc::ingest {
 
 class SexpCursor {
+  // Character classes, one table lookup instead of a chain of compares.
+  static constexpr std::uint8_t kSpace = 1, kDelim = 2;
+  static constexpr auto kClass = [] {
+    std::array<std::uint8_t, 256> t{};
+    for (unsigned char c : {' ', '\t', '\r', '\n', '\0'}) t[c] = kSpace | kDelim;
+    t[static_cast<unsigned char>('(')] = kDelim;
+    t[static_cast<unsigned char>(')')] = kDelim;
+    return t;
+  }();
+
  public:
   explicit SexpCursor(std::string_view text)
       : begin_(text.data()), p_(text.data()), end_(text.data() + text.size()) {}
 
   // Spaces, tabs, CR, LF and NUL (datagrams end in NUL) separate tokens.
   void skip_ws() {
-    while (p_ < end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\n' || *p_ == '\0')) ++p_;
+    while (p_ < end_ && (kClass[static_cast<unsigned char>(*p_)] & kSpace)) ++p_;
   }
   bool at_end() {
     skip_ws();
@@ -61,16 +72,31 @@ class SexpCursor {
   bool number(double& v) {
     skip_ws();
     if (p_ < end_ && *p_ == '+') ++p_;  // from_chars refuses a leading '+'
+    if (fast_decimal(v)) return true;
     auto [q, ec] = std::from_chars(p_, end_, v);
     if (ec != std::errc() || q == p_ || !std::isfinite(v) || (q < end_ && !is_delim(*q))) return false;
     p_ = q;
     return true;
   }
+  // A one-character token such as a side "l"/"r" or a view quality "h".
+  bool single_char(char& ch) {
+    skip_ws();
+    if (end_ - p_ < 1 || is_delim(*p_) || (end_ - p_ >= 2 && !is_delim(p_[1]))) return false;
+    ch = *p_++;
+    return true;
+  }
   // A decimal integer; a real with a zero fraction ("3.0") is accepted too.
   bool integer(std::int64_t& v) {
     skip_ws();
-    auto [q, ec] = std::from_chars(p_, end_, v);
-    if (ec == std::errc() && q != p_ && (q >= end_ || is_delim(*q))) {
+    // Fast path: [-]digits (at most 18, so no overflow) followed by a delimiter.
+    const char* q = p_;
+    const bool neg = q < end_ && *q == '-';
+    if (neg) ++q;
+    const char* digits = q;
+    std::int64_t x = 0;
+    while (q < end_ && q - digits < 18 && static_cast<unsigned>(*q - '0') < 10) x = x * 10 + (*q++ - '0');
+    if (q != digits && (q >= end_ || is_delim(*q))) {
+      v = neg ? -x : x;
       p_ = q;
       return true;
     }
@@ -125,11 +151,45 @@ class SexpCursor {
   const char* end() const { return end_; }
   void seek(const char* p) { p_ = p; }
 
-  static bool is_delim(char c) {
-    return c == ' ' || c == '(' || c == ')' || c == '\t' || c == '\r' || c == '\n' || c == '\0';
-  }
+  static bool is_delim(char c) { return kClass[static_cast<unsigned char>(c)] & kDelim; }
 
  private:
+  // Clinger's fast path: [-]digits[.digits] with at most 15 significant
+  // digits and no exponent is exactly mantissa / 10^k, and one IEEE
+  // division of two exact doubles rounds correctly, so the result equals
+  // strtod's. Anything else (exponents, long mantissas) goes to from_chars.
+  bool fast_decimal(double& v) {
+    static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8,
+                                        1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    const char* q = p_;
+    const bool neg = q < end_ && *q == '-';
+    if (neg) ++q;
+    std::uint64_t m = 0;
+    int digits = 0, frac = 0;
+    const char* start = q;
+    while (q < end_ && static_cast<unsigned>(*q - '0') < 10) {
+      m = m * 10 + static_cast<unsigned>(*q++ - '0');
+      if (m != 0) ++digits;  // leading zeros are not significant
+    }
+    if (q == start) return false;
+    if (q < end_ && *q == '.') {
+      ++q;
+      const char* f = q;
+      while (q < end_ && static_cast<unsigned>(*q - '0') < 10) {
+        m = m * 10 + static_cast<unsigned>(*q++ - '0');
+        if (m != 0) ++digits;
+      }
+      frac = static_cast<int>(q - f);
+      if (frac == 0) return false;
+    }
+    if (digits > 15 || frac > 15 || (q < end_ && !is_delim(*q))) return false;
+    double d = static_cast<double>(m);
+    if (frac) d /= kPow10[frac];
+    v = neg ? -d : d;
+    p_ = q;
+    return true;
+  }
+
   const char* begin_;
   const char* p_;
   const char* end_;

@@ -11,12 +11,27 @@ bool fail(SexpCursor& c, std::string& error, const char* what) {
 }
 
 bool parse_side(SexpCursor& c, Side& side) {
-  std::string_view s;
-  if (!c.symbol(s)) return false;
-  if (s == "l") side = Side::Left;
-  else if (s == "r") side = Side::Right;
+  char ch = 0;
+  if (!c.single_char(ch)) return false;
+  if (ch == 'l') side = Side::Left;
+  else if (ch == 'r') side = Side::Right;
   else return false;
   return true;
+}
+
+// Player sub-record keys, told apart by length and first letter (hot loop).
+enum class Sub { V, Fp, S, F, C, Unknown };
+Sub sub_of(std::string_view k) {
+  if (k.size() == 1) {
+    switch (k[0]) {
+      case 'v': return Sub::V;
+      case 's': return Sub::S;
+      case 'f': return Sub::F;
+      case 'c': return Sub::C;
+      default: return Sub::Unknown;
+    }
+  }
+  return k.size() == 2 && k[0] == 'f' && k[1] == 'p' ? Sub::Fp : Sub::Unknown;
 }
 
 // (tm LNAME RNAME LSCORE RSCORE [LPEN_SCORE LPEN_MISS RPEN_SCORE RPEN_MISS]),
@@ -54,12 +69,14 @@ bool parse_counters(SexpCursor& c, CommandCounters& k) {
 
 // One player, the opening "(" already consumed:
 // (SIDE UNUM) TYPE STATE X Y VX VY BODY NECK [PX PY] (v ..) [(fp ..)] (s ..) [(f ..)] (c ..))
-bool parse_player(SexpCursor& c, WorldState& out, std::string& error) {
+bool parse_player(SexpCursor& c, WorldState& out, std::uint32_t& seen, std::string& error) {
   Side side{};
   int unum = 0;
   if (!c.lit('(') || !parse_side(c, side) || !c.integer_in(unum, 1, kPlayersPerSide) || !c.lit(')'))
     return fail(c, error, "bad player id");
-  PlayerState& p = out.players[static_cast<std::size_t>(player_index(side, unum))];
+  const int slot = player_index(side, unum);
+  seen |= 1u << slot;
+  PlayerState& p = out.players[static_cast<std::size_t>(slot)];
   p = PlayerState{};
   p.side = side;
   p.unum = static_cast<std::uint8_t>(unum);
@@ -78,16 +95,16 @@ bool parse_player(SexpCursor& c, WorldState& out, std::string& error) {
     std::string_view key;
     if (!c.symbol(key)) return fail(c, error, "bad player sub-record");
     bool ok = true;
-    if (key == "v") {
-      std::string_view q;
-      ok = c.symbol(q) && q.size() == 1 && (q[0] == 'h' || q[0] == 'l') && c.number(p.view_width) &&
-           c.lit(')');
-      if (ok) p.view_quality = q[0];
-    } else if (key == "fp") {
+    const Sub sub = sub_of(key);
+    if (sub == Sub::V) {
+      char q = 0;
+      ok = c.single_char(q) && (q == 'h' || q == 'l') && c.number(p.view_width) && c.lit(')');
+      if (ok) p.view_quality = q;
+    } else if (sub == Sub::Fp) {
       std::array<double, 2> fp{};
       ok = c.number(fp[0]) && c.number(fp[1]) && c.lit(')');
       p.focus_point = fp;
-    } else if (key == "s") {
+    } else if (sub == Sub::S) {
       ok = c.number(p.stamina) && c.number(p.effort) && c.number(p.recovery);
       if (ok && c.peek() != ')') {
         double cap = 0;
@@ -95,12 +112,12 @@ bool parse_player(SexpCursor& c, WorldState& out, std::string& error) {
         p.capacity = cap;
       }
       ok = ok && c.lit(')');
-    } else if (key == "f") {
+    } else if (sub == Sub::F) {
       Side fs{};
       std::uint8_t fn = 0;
       ok = parse_side(c, fs) && c.integer_in(fn, 1, kPlayersPerSide) && c.lit(')');
       p.attention = std::make_pair(fs, fn);
-    } else if (key == "c") {
+    } else if (sub == Sub::C) {
       ok = parse_counters(c, p.counters);
     } else {
       ok = false;
@@ -113,16 +130,18 @@ bool parse_player(SexpCursor& c, WorldState& out, std::string& error) {
 
 }  // namespace
 
+void reset_player(WorldState& out, int i) {
+  PlayerState& p = out.players[static_cast<std::size_t>(i)];
+  p = PlayerState{};
+  p.side = i < kPlayersPerSide ? Side::Left : Side::Right;
+  p.unum = static_cast<std::uint8_t>(i % kPlayersPerSide + 1);
+  const double sign = p.side == Side::Left ? 1.0 : -1.0;
+  p.x = -(p.unum * 3.0 * sign);
+  p.y = -37.0;
+}
+
 void reset_players(WorldState& out) {
-  for (int i = 0; i < kMaxPlayers; ++i) {
-    PlayerState& p = out.players[static_cast<std::size_t>(i)];
-    p = PlayerState{};
-    p.side = i < kPlayersPerSide ? Side::Left : Side::Right;
-    p.unum = static_cast<std::uint8_t>(i % kPlayersPerSide + 1);
-    const double sign = p.side == Side::Left ? 1.0 : -1.0;
-    p.x = -(p.unum * 3.0 * sign);
-    p.y = -37.0;
-  }
+  for (int i = 0; i < kMaxPlayers; ++i) reset_player(out, i);
 }
 
 bool parse_text_show(std::string_view text, WorldState& out, ShowExtras& extras,
@@ -131,8 +150,8 @@ bool parse_text_show(std::string_view text, WorldState& out, ShowExtras& extras,
   extras = ShowExtras{};
   if (!c.lit('(') || !c.keyword("show")) return fail(c, error, "not a show");
   if (!c.integer_in(out.time, -1, 1 << 30)) return fail(c, error, "bad show time");
-  reset_players(out);
   bool ball_seen = false;
+  std::uint32_t seen = 0;  // player slots present in the record
   // Everything after the time is a parenthesised group: (pm), (tm), ((b) ..),
   // ((l N) ..), ((r N) ..).
   while (c.lit('(')) {
@@ -140,16 +159,15 @@ bool parse_text_show(std::string_view text, WorldState& out, ShowExtras& extras,
       // ((b) ...) or a player.
       const char* save = c.ptr();
       c.lit('(');
-      std::string_view id;
-      if (!c.symbol(id)) return fail(c, error, "bad object id");
-      if (id == "b") {
+      char id = 0;
+      if (c.single_char(id) && id == 'b') {
         if (!c.lit(')') || !c.number(out.ball.x) || !c.number(out.ball.y) || !c.number(out.ball.vx) ||
             !c.number(out.ball.vy) || !c.lit(')'))
           return fail(c, error, "bad ball");
         ball_seen = true;
       } else {
         c.seek(save);
-        if (!parse_player(c, out, error)) return false;
+        if (!parse_player(c, out, seen, error)) return false;
       }
       continue;
     }
@@ -169,6 +187,9 @@ bool parse_text_show(std::string_view text, WorldState& out, ShowExtras& extras,
   }
   if (!c.lit(')')) return fail(c, error, "show not closed");
   if (!ball_seen) return fail(c, error, "show without ball");
+  // Slots missing from the record become absent, parked players.
+  for (int i = 0; i < kMaxPlayers; ++i)
+    if (!(seen & (1u << i))) reset_player(out, i);
   if (!c.at_end()) return fail(c, error, "trailing bytes after show");
   return true;
 }

@@ -29,5 +29,6 @@ bool parse_text_show(std::string_view text, WorldState& out, ShowExtras& extras,
 // The player slots of an absent player: state 0, parked at
 // (-(unum*3*side), -37) as rcssserver's Player::disable() does.
 void reset_players(WorldState& out);
+void reset_player(WorldState& out, int slot);
 
 }  // namespace mc::ingest
