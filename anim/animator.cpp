@@ -171,6 +171,11 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
     f.ball.x = lerpf(a.ball.x, b.ball.x, t);
     f.ball.y = lerpf(a.ball.y, b.ball.y, t);
     f.ball.z = ball_r;
+    FrameInfo* info = nullptr;
+    if (info_sink_ != nullptr) {
+      info = &info_sink_->emplace_back();
+      info->seq = f.seq;
+    }
     for (std::size_t i = 0; i < kMaxPlayers; ++i) {
       const PlayerState& pa = a.players[i];
       const PlayerState& pb = b.players[i];
@@ -184,7 +189,8 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       in.x = lerpf(pa.x, pb.x, ti);
       in.y = lerpf(pa.y, pb.y, ti);
       in.heading = lerp_deg(h0[i], h1[i], ti);
-      in.gaze = lerp_deg(static_cast<float>(pa.body + pa.neck), static_cast<float>(pb.body + pb.neck), ti);
+      in.body = lerp_deg(static_cast<float>(pa.body), static_cast<float>(pb.body), ti);
+      in.neck = lerpf(pa.neck, pb.neck, ti);
       if (!hold[i] && (pb.x != pa.x || pb.y != pa.y)) {
         in.move_dx = static_cast<float>(pb.x - pa.x);
         in.move_dy = static_cast<float>(pb.y - pa.y);
@@ -198,7 +204,15 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       in.reset = (sub == 0 && act[i] == Action::Teleport) || !pa.active() || !ctx.was_active;
       in.animate_locomotion = loco_on && pa.active();
       in.dt = 0.001f * static_cast<float>(params_.simulator_step_ms()) / kFramesPerCycle;
-      animate_player(ctx, in, lp, skeleton_, pose);
+      bool planted[2] = {false, false};
+      animate_player(ctx, in, lp, skeleton_, pose, planted);
+      if (info != nullptr) {
+        PlayerFrameInfo& pi = info->players[i];
+        pi.action = in.action;
+        pi.reset = in.reset;
+        pi.planted[0] = planted[0];
+        pi.planted[1] = planted[1];
+      }
       ctx.was_active = pa.active();
     }
   }

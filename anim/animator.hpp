@@ -33,6 +33,19 @@ namespace mc::anim {
 
 struct PlayerAnim;  // per-player animation context (player_animation.hpp)
 
+// What the animator decided for one player at one frame: for the quality
+// tool and tests, not for clients.
+struct PlayerFrameInfo {
+  Action action = Action::Stand;  // smoothed decision of the frame's cycle
+  bool in_action = false;         // a kick, tackle, catch or dive motion is playing
+  bool reset = false;             // teleported or (re)connected: the pose jumped on purpose
+  bool planted[2] = {false, false};  // feet the animator keeps fixed on the grass: [0] right, [1] left
+};
+struct FrameInfo {
+  std::uint32_t seq = 0;
+  std::array<PlayerFrameInfo, kMaxPlayers> players{};
+};
+
 class Animator {
  public:
   // `skeleton` must be human_skeleton() (the motion code knows its joints) and
@@ -50,6 +63,10 @@ class Animator {
   // End of input: appends the frames still held back by the look-ahead (two
   // per state; the last state's half-way frame holds still).
   void finish(std::vector<PoseFrame>& out, std::vector<AnimEvent>* events = nullptr);
+
+  // Optional: also append one FrameInfo per emitted frame to `sink` (null
+  // to stop). The sink must outlive the pushes that use it.
+  void set_frame_info_sink(std::vector<FrameInfo>* sink) { info_sink_ = sink; }
 
   const AnimConfig& config() const { return config_; }
   // The smoothed decision for one player at the last emitted cycle (for
@@ -71,6 +88,7 @@ class Animator {
   std::uint64_t pushed_ = 0;      // states received
   std::uint64_t emitted_ = 0;     // cycles whose frames have left
   std::unique_ptr<std::array<PlayerAnim, kMaxPlayers>> players_;
+  std::vector<FrameInfo>* info_sink_ = nullptr;
 };
 
 }  // namespace mc::anim

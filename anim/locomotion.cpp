@@ -20,12 +20,6 @@ constexpr float kRestYawTolerance = 30;  // deg
 // Side of each foot: +1 right (+Z), -1 left.
 constexpr float kSide[2] = {1.0f, -1.0f};
 
-float phase_of_foot(float phase, int foot) {
-  float p = phase - (foot == 0 ? 0.0f : 0.5f);
-  if (p < 0) p += 1.0f;
-  return p;
-}
-
 // Highest pelvis that keeps an ankle (body space) within reach of its hip.
 float pelvis_limit(const float ankle[3], int foot) {
   const float dz = ankle[2] - kSide[foot] * dims::kHipHalfWidth;
@@ -65,6 +59,10 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     s.pelvis_height = kStandPelvis;
     place_at_rest(s, body, 0);
     place_at_rest(s, body, 1);
+    // Ready to step off, right foot first.
+    s.feet[0].stance_phase = 1.0f;
+    s.feet[1].stance_phase = 0.5f;
+    s.feet[0].planted_frames = s.feet[1].planted_frames = 100;
   }
   const float dt = in.dt > 1e-4f ? in.dt : 0.05f;
   const float ds = std::hypot(in.x - s.x, in.y - s.y);
@@ -98,29 +96,67 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     if (settled && ds < 0.02f) dphase = 0;
     else dphase = std::max(dphase, prm.settle_cadence * dt * 0.5f);
   }
-  const float phase0 = posture_phase(s.posture_m);
-  s.posture_m = advance_posture(s.posture_m, dphase * kReferenceCycleM, kReferenceCycleM);
+  // The posture index follows the distance; a touch-down off its keyframe
+  // pulls it back into step gradually (a few frames), so that the rhythmic
+  // channels stay continuous.
+  const float corr = clampf(0.25f * s.phase_error, -0.03f, 0.03f);
+  s.phase_error -= corr;
+  s.posture_m = advance_posture(s.posture_m, (dphase - corr) * kReferenceCycleM, kReferenceCycleM);
 
   // Direction of travel for the landing spots.
   float ux = in.move_dx, uy = in.move_dy;
   const float un = std::hypot(ux, uy);
   if (un > 1e-3f) { ux /= un; uy /= un; } else { ux = uy = 0; }
 
+  // Lift-off: a foot's own stance lasts a fraction beta of the cycle (so each
+  // foot steps once per cycle and the cadence cap holds), and the feet
+  // alternate: walking waits for the other foot to be down, running for it
+  // to be half-way through its swing. A foot left too far behind or twisted
+  // past what the hip can turn steps early, but not in the first frames after
+  // its touch-down.
+  bool wants[2] = {false, false};
+  float eager[2] = {0, 0};
   for (int i = 0; i < 2; ++i) {
-    FootState& f = s.feet[i];
-    const float psi0 = phase_of_foot(phase0, i);
+    const FootState& f = s.feet[i];
+    const FootState& o = s.feet[1 - i];
+    if (!f.planted || dphase <= 0) continue;
     float bx, bz;
     body.to_body(f.x, f.y, bx, bz);
-    const bool too_far = f.planted && std::hypot(bx, bz - kSide[i] * dims::kHipHalfWidth) > 0.55f;
-    const bool scheduled = psi0 < beta && psi0 + dphase >= beta;
-    if (f.planted && dphase > 0 && (scheduled || too_far)) {
+    const bool at_rest = std::hypot(bx, bz - kSide[i] * 0.11f) <= kRestTolerance &&
+                         std::fabs(delta_deg(f.yaw, in.heading)) <= kRestYawTolerance;
+    if (moving == 0 && at_rest) continue;
+    const bool too_far = f.planted_frames >= 2 && std::hypot(bx, bz - kSide[i] * dims::kHipHalfWidth) > 0.55f;
+    const bool twisted = f.planted_frames >= 2 && std::fabs(delta_deg(f.yaw, in.heading)) > 50.0f;
+    const bool due = f.stance_phase + dphase >= beta || twisted;
+    const bool other_ok = o.planted ? true : (beta < 0.5f && o.progress >= 0.4f);
+    // A foot being dragged goes even if the other is in the air (a flight
+    // phase, as in sprinting).
+    if ((due && other_ok) || too_far) {
+      wants[i] = true;
+      eager[i] = f.stance_phase + (too_far ? 1.0f : 0.0f);
+    }
+  }
+  // Both planted and both due: the longer stance goes first, the other waits.
+  if (wants[0] && wants[1] && s.feet[0].planted && s.feet[1].planted) wants[eager[0] >= eager[1] ? 1 : 0] = false;
+
+  for (int i = 0; i < 2; ++i) {
+    FootState& f = s.feet[i];
+    ++f.since_landing;
+    if (wants[i]) {
       f.planted = false;
       f.from_x = f.x; f.from_y = f.y; f.from_yaw = f.yaw;
-      f.progress = scheduled ? (psi0 + dphase - beta) / (1.0f - beta) : 0.0f;
+      f.progress = std::max(0.0f, f.stance_phase + dphase - beta) / (1.0f - beta);
+      f.progress = std::min(f.progress, 0.3f);
+      f.to_x = f.x; f.to_y = f.y;
+      f.since_landing = std::max(f.since_landing, 0);
     } else if (!f.planted) {
       f.progress += dphase / (1.0f - beta);
     }
-    if (f.planted) continue;
+    if (f.planted) {
+      ++f.planted_frames;
+      f.stance_phase += dphase;
+      continue;
+    }
     const float p = std::min(f.progress, 1.0f);
     // Landing spot: where the hip will be at touch-down, plus half a stance ahead.
     const float travel = (1.0f - p) * (1.0f - beta) * cycle * moving;
@@ -134,17 +170,50 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     float obx, obz, tbx, tbz;
     body.to_body(o.x, o.y, obx, obz);
     body.to_body(tx, ty, tbx, tbz);
-    if (kSide[i] * (tbz - obz) < 0.14f) {
-      tbz = obz + kSide[i] * 0.14f;
-      body.to_field(tbx, tbz, tx, ty);
+    if (kSide[i] * (tbz - obz) < 0.14f) tbz = obz + kSide[i] * 0.14f;
+    // Land where the hip can still reach after a change of direction:
+    // within 0.5 m of the hip's spot at touch-down.
+    float hx, hz;
+    body.dir_to_body(ux * travel, uy * travel, hx, hz);
+    hz += kSide[i] * dims::kHipHalfWidth;
+    const float off = std::hypot(tbx - hx, tbz - hz);
+    if (off > 0.5f) {
+      tbx = hx + (tbx - hx) * 0.5f / off;
+      tbz = hz + (tbz - hz) * 0.5f / off;
     }
+    body.to_field(tbx, tbz, tx, ty);
+    // The aim moves at most 0.15 m per frame more than the body: a sudden stop or reversal of
+    // the 2D player bends the swing instead of throwing the foot.
+    if (p <= 0.3f && f.to_x == f.from_x && f.to_y == f.from_y) { f.to_x = tx; f.to_y = ty; }
+    const float ax = tx - f.to_x, ay = ty - f.to_y, am = std::hypot(ax, ay);
+    const float reach = 0.15f + 1.5f * ds;
+    const float step = am > reach ? reach / am : 1.0f;
+    f.to_x += ax * step;
+    f.to_y += ay * step;
+    tx = f.to_x;
+    ty = f.to_y;
     const float w = smoothstep(p);
     f.x = f.from_x + (tx - f.from_x) * w;
     f.y = f.from_y + (ty - f.from_y) * w;
     f.yaw = lerp_deg(f.from_yaw, in.heading, w);
     f.lift = (0.07f + 0.12f * run) * std::sin(kPi * p) * std::max(moving, 0.5f);
+    // Touch-down, unless this foot landed too recently for a human cadence:
+    // then it hovers a frame longer just above its spot.
+    const int min_frames = static_cast<int>(std::ceil(2.0f / (prm.hard_cadence_cap * dt) - 1e-3f));
+    const FootState& other = s.feet[1 - i];
+    if (f.progress >= 1.0f && f.since_landing < min_frames && other.planted && other.planted_frames < 3) {
+      f.progress = 0.97f;
+      f.lift = std::max(f.lift, 0.01f);
+    }
     if (f.progress >= 1.0f) {
       f.planted = true;
+      f.since_landing = 0;
+      f.planted_frames = 0;
+      f.stance_phase = 0;
+      // Touch-down of the right foot is phase 0, of the left 0.5.
+      float e = posture_phase(s.posture_m) - (i == 0 ? 0.0f : 0.5f);
+      e -= std::floor(e + 0.5f);
+      s.phase_error = e;
       f.lift = 0;
       f.progress = 0;
       ++s.steps;
@@ -165,8 +234,12 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     t.yaw_deg = -delta_deg(f.yaw, in.heading);
     t.pitch_deg = f.planted ? 0.0f : 12.0f * std::sin(2.0f * kPi * std::min(f.progress, 1.0f)) * run;
     out.planted[i] = f.planted;
-    pelvis = std::min(pelvis, pelvis_limit(t.ankle_ms, i));
+    // Only planted feet hold the pelvis down; a swinging foot may tuck.
+    if (f.planted) pelvis = std::min(pelvis, pelvis_limit(t.ankle_ms, i));
   }
+  // The pelvis drops at most 5 cm and rises at most 3 cm per frame, so the
+  // knees never snap; the rare foot it leaves out of reach is clamped by IK.
+  pelvis = clampf(pelvis, s.pelvis_height - 0.05f, s.pelvis_height + 0.03f);
   s.pelvis_height = std::max(pelvis, 0.62f);
   out.pelvis_height = s.pelvis_height;
   out.run = run;

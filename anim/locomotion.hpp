@@ -16,7 +16,8 @@
 namespace mc::anim {
 
 struct LocomotionParams {
-  float cadence_cap = 4.2f;       // steps/s; humans sprint at <= 4.5 (anchors D.2)
+  float cadence_cap = 4.2f;       // steps/s the stride model aims at; humans sprint at <= 4.5 (anchors D.2)
+  float hard_cadence_cap = 4.5f;  // steps/s no foot ever exceeds: a touch-down waits (hovering) if needed
   float speed_halflife_s = 0.25f; // low-pass of the server's speed (anchors D.1: 0.2-0.3 s)
   float max_stance_travel = 0.8f; // m the body may cover over one planted foot
   float settle_cadence = 2.0f;    // steps/s of the steps that bring the feet to rest
@@ -30,6 +31,10 @@ struct FootState {
   float yaw = 0, from_yaw = 0;    // sole heading, field deg
   float lift = 0;                 // ankle above its resting height (m)
   float progress = 0;             // swing progress in [0, 1]
+  int planted_frames = 0;         // frames since touch-down (gates early steps: cadence)
+  float stance_phase = 0;         // cycle fraction covered since touch-down
+  int since_landing = 100;        // frames since the previous touch-down
+  float to_x = 0, to_y = 0;       // landing spot being aimed at, field m (moves at a bounded speed)
 };
 
 // Per-player state carried from frame to frame (the caller owns it, as an
@@ -41,6 +46,7 @@ struct LocomotionState {
   float speed = 0;                  // smoothed ground speed, m/s
   float cycle_m = 1.2f;             // current cycle (two steps) length, m
   float pelvis_height = 0.97f;
+  float phase_error = 0;            // posture phase still to correct after an off-beat touch-down
   FootState feet[2];                // [0] right, [1] left
   int steps = 0;                    // touch-downs so far (for tests and metrics)
 };

@@ -23,11 +23,17 @@ int clamp_to_limits(const SkeletonDef& skeleton, std::span<float> angles) {
 }
 
 void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const LocomotionParams& lp,
-                    const SkeletonDef& limits_from, PlayerPose& out) {
+                    const SkeletonDef& limits_from, PlayerPose& out, bool* planted) {
   const bool rest = !in.animate_locomotion || in.action == Action::Stand ||
                     in.action == Action::Turn || in.action == Action::Disconnected;
+  // Rate-limited heading: zig-zags and pirouettes are softened further.
+  float heading = in.heading;
+  if (!in.reset)  // half-way each frame (a 0.1 s time constant), then rate-limited
+    heading = wrap_deg(ctx.heading + clampf(0.5f * delta_deg(in.heading, ctx.heading), -kMaxTurnPerFrameDeg,
+                                            kMaxTurnPerFrameDeg));
+  ctx.heading = heading;
   LocomotionInput li;
-  li.x = in.x; li.y = in.y; li.heading = in.heading; li.dt = in.dt;
+  li.x = in.x; li.y = in.y; li.heading = heading; li.dt = in.dt;
   li.move_dx = in.move_dx; li.move_dy = in.move_dy;
   li.rest = rest;
   li.stamina = in.stamina;
@@ -35,6 +41,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   LocomotionOutput lo;
   step_locomotion(ctx.loco, li, lp, lo);
   ctx.action = in.action;
+  if (planted != nullptr) { planted[0] = lo.planted[0]; planted[1] = lo.planted[1]; }
 
   std::span<float> a(out.angles.data(), static_cast<std::size_t>(dof::kCount));
   std::fill(out.angles.begin(), out.angles.end(), 0.0f);
@@ -61,9 +68,12 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   a[dof::kLShoulder + 1] = 8.0f + 6.0f * run;
   a[dof::kLElbow] = 12.0f + 75.0f * run * amp;
 
-  // Head: the gaze is the server's body + neck exactly; the pelvis, torso and
-  // neck share the yaw so that the head's world yaw matches it.
-  const float head_yaw = -delta_deg(in.gaze, in.heading) - a[dof::kPelvis] - a[dof::kTorso];
+  // Head: the server's gaze (body + neck). The head turns by the neck angle
+  // exactly, plus the lag of the smoothed heading behind the server's body
+  // (up to 60 deg, so that a pirouette cannot wrap the head round); the
+  // pelvis, torso and neck share the yaw.
+  const float lag = clampf(delta_deg(in.body, heading), -60.0f, 60.0f);
+  const float head_yaw = -(in.neck + lag) - a[dof::kPelvis] - a[dof::kTorso];
   a[dof::kNeck + 0] = clampf(0.4f * head_yaw, -80.0f, 80.0f);
   a[dof::kHead + 0] = clampf(head_yaw - a[dof::kNeck + 0], -80.0f, 80.0f);
   a[dof::kNeck + 1] = 0.5f * lean;  // keep the eyes level against the lean
@@ -80,7 +90,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   out.x = in.x;
   out.y = in.y;
   out.z = lo.pelvis_height;
-  out.heading = wrap_deg(in.heading);
+  out.heading = heading;
 }
 
 }  // namespace mc::anim

@@ -16,14 +16,20 @@ namespace mc::anim {
 // Per-player context carried across frames (owned by the Animator).
 struct PlayerAnim {
   LocomotionState loco;
+  float heading = 0;           // heading of the previous frame, field deg (rate-limited)
   Action action = Action::Stand;
   bool was_active = false;
 };
 
+// Fastest turn of the body between two frames: about a half turn in 0.4 s,
+// what a human manages; the server allows 180 deg per cycle.
+inline constexpr float kMaxTurnPerFrameDeg = 22.5f;
+
 struct PlayerFrameInput {
   float x = 0, y = 0;          // root, field m (already interpolated)
-  float heading = 0;           // smoothed body heading, field deg
-  float gaze = 0;              // server body + neck, field deg: the head looks exactly here
+  float heading = 0;           // smoothed body heading, field deg (animate_player rate-limits it)
+  float body = 0;              // server body angle, field deg (interpolated between cycles)
+  float neck = 0;              // server neck angle relative to the body, deg (interpolated)
   float move_dx = 0, move_dy = 0;  // direction of travel, field (any length; 0 when none)
   Action action = Action::Stand;   // smoothed decision of this cycle
   float stamina = 1;           // 0..1
@@ -36,8 +42,9 @@ struct PlayerFrameInput {
 
 // Writes x, y, z, heading and the angles of `out` (side, unum, state are the
 // caller's). `limits_from` clamps every angle into its joint limits.
+// `planted` (optional) receives which feet locomotion keeps fixed on the grass.
 void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const LocomotionParams& loco_params,
-                    const SkeletonDef& limits_from, PlayerPose& out);
+                    const SkeletonDef& limits_from, PlayerPose& out, bool* planted = nullptr);
 
 // Clamps each angle into its joint's [min, max]; returns how many were out.
 int clamp_to_limits(const SkeletonDef& skeleton, std::span<float> angles);

@@ -1,1 +1,213 @@
-// placeholder
+#include "anim/tools/metrics.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "anim/body_frame.hpp"
+#include "anim/human_skeleton.hpp"
+#include "anim/local_to_model_job.hpp"
+
+namespace mc::anim::tools {
+
+double Distribution::mean() const {
+  if (values.empty()) return 0;
+  double s = 0;
+  for (double v : values) s += v;
+  return s / static_cast<double>(values.size());
+}
+
+double Distribution::percentile(double p) const {
+  if (values.empty()) return 0;
+  std::vector<double> v = values;
+  std::sort(v.begin(), v.end());
+  const auto i = static_cast<std::size_t>(std::clamp(p / 100.0, 0.0, 1.0) * static_cast<double>(v.size() - 1) + 0.5);
+  return v[i];
+}
+
+double Distribution::max() const {
+  return values.empty() ? 0 : *std::max_element(values.begin(), values.end());
+}
+
+namespace {
+
+void pose_models(const SkeletonDef& s, const PlayerPose& pose, std::vector<glm::mat4>& m) {
+  m.resize(s.joints.size());
+  LocalToModelJob fk{&s, std::span<const float>(pose.angles.data(), pose.angles.size()),
+                     glm::vec3(0, pose.z, 0), m};
+  fk.Run();
+}
+
+glm::vec3 to_field(const PlayerPose& pose, const glm::vec3& body) {
+  const BodyFrame f(pose.x, pose.y, pose.heading);
+  float fx, fy;
+  f.to_field(body.x, body.z, fx, fy);
+  return {fx, fy, body.y};
+}
+
+}  // namespace
+
+glm::vec3 joint_point_field(const SkeletonDef& s, const PlayerPose& pose, int joint, glm::vec3 local) {
+  std::vector<glm::mat4> m;
+  pose_models(s, pose, m);
+  return to_field(pose, glm::vec3(m[static_cast<std::size_t>(joint)] * glm::vec4(local, 1.0f)));
+}
+
+QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& states,
+                      const std::vector<PoseFrame>& frames, const std::vector<FrameInfo>& infos,
+                      const std::vector<AnimEvent>& events, double ball_r) {
+  QualityReport r;
+  r.frames = static_cast<long>(frames.size());
+  if (frames.empty()) return r;
+  const std::uint32_t seq0 = frames[0].seq;
+  const int foot_joint[2] = {kRFoot, kLFoot};
+
+  // Per player and foot: the running stance (landing spot, largest distance).
+  // `swung`: the foot was seen in the air since the last reset, so its next
+  // stance is a real touch-down (not feet put down by a teleport).
+  struct Stance { bool on = false; glm::vec3 start{0}; double worst = 0; int frames = 0; bool swung = false; };
+  std::array<std::array<Stance, 2>, kMaxPlayers> stance{};
+  std::array<std::vector<double>, kMaxPlayers> landings;  // times (s) of touch-downs
+  std::vector<glm::mat4> m;
+  const int dofs = skel.dof_count();
+
+  for (std::size_t fi = 0; fi < frames.size(); ++fi) {
+    const PoseFrame& f = frames[fi];
+    const FrameInfo* info = fi < infos.size() ? &infos[fi] : nullptr;
+    const PoseFrame* prev = fi > 0 ? &frames[fi - 1] : nullptr;
+    const FrameInfo* prev_info = fi > 0 && fi - 1 < infos.size() ? &infos[fi - 1] : nullptr;
+    const std::size_t si = f.seq / 2;
+    const WorldState* st = f.substep == 0 && si < states.size() ? &states[si] : nullptr;
+    const double t = 0.05 * static_cast<double>(f.seq - seq0);
+    for (std::size_t p = 0; p < kMaxPlayers; ++p) {
+      const PlayerPose& pose = f.players[p];
+      const bool active = (pose.state & state_bits::kStand) != 0;
+      if (st != nullptr && st->players[p].active())
+        r.root_error_m.values.push_back(std::hypot(pose.x - st->players[p].x, pose.y - st->players[p].y));
+      // Limits.
+      std::size_t k = 0;
+      for (const JointDef& j : skel.joints)
+        for (std::size_t d = 0; d < j.dofs.size(); ++d, ++k)
+          if (pose.angles[k] < j.limits[d][0] - 0.01f || pose.angles[k] > j.limits[d][1] + 0.01f)
+            ++r.limit_violations;
+      if (!active || info == nullptr) {
+        for (auto& s : stance[p]) s.on = s.swung = false;
+        continue;
+      }
+      const PlayerFrameInfo& pi = info->players[p];
+      // Jumps between frames, outside actions and resets.
+      if (prev != nullptr && prev_info != nullptr && (prev->players[p].state & state_bits::kStand) &&
+          !pi.reset && !pi.in_action && !prev_info->players[p].in_action && !prev_info->players[p].reset) {
+        for (int d = 0; d < dofs; ++d) {
+          const double raw = std::fabs(pose.angles[static_cast<std::size_t>(d)] -
+                                       prev->players[p].angles[static_cast<std::size_t>(d)]);
+          // Neck and head yaw follow the server's neck angle exactly, which
+          // turns up to 180 deg per cycle: reported on their own.
+          if (d == dof::kNeck || d == dof::kHead) {
+            r.max_head_jump_deg = std::max(r.max_head_jump_deg, raw);
+            continue;
+          }
+          const double jump = std::fabs(pose.angles[static_cast<std::size_t>(d)] -
+                                        prev->players[p].angles[static_cast<std::size_t>(d)]);
+          if (jump > r.max_jump_deg) {
+            r.max_jump_deg = jump;
+            char buf[160];
+            std::snprintf(buf, sizeof buf, "seq %u, %s %d, dof %d (%s)", f.seq,
+                          pose.side == Side::Left ? "left" : "right", pose.unum, d, action_name(pi.action));
+            r.max_jump_where = buf;
+          }
+        }
+      }
+      // Stances of planted feet.
+      pose_models(skel, pose, m);
+      for (int foot = 0; foot < 2; ++foot) {
+        Stance& s = stance[p][static_cast<std::size_t>(foot)];
+        const glm::vec3 ankle = to_field(pose, glm::vec3(m[static_cast<std::size_t>(foot_joint[foot])][3]));
+        const bool planted = pi.planted[foot] && !pi.reset;
+        if (pi.reset) s.swung = false;
+        if (planted && !s.on) {
+          if (s.swung && !pi.in_action) landings[p].push_back(t);
+          s = Stance{true, ankle, 0, 0, false};
+        }
+        if (!pi.planted[foot] && !pi.reset) s.swung = true;
+        if (planted) {
+          s.worst = std::max(s.worst, static_cast<double>(std::hypot(ankle.x - s.start.x, ankle.y - s.start.y)));
+          ++s.frames;
+        } else if (s.on) {
+          if (s.frames >= 2) r.slide_m.values.push_back(s.worst);
+          if (s.frames >= 2 && s.worst >= r.slide_m.max()) {
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "seq %u, slot %zu, foot %d", f.seq, p, foot);
+            r.max_slide_where = buf;
+          }
+          s.on = false;
+        }
+      }
+      if (pi.reset) landings[p].clear();  // no stride spans a teleport
+    }
+  }
+  for (auto& ps : stance)
+    for (auto& s : ps)
+      if (s.on && s.frames >= 2) r.slide_m.values.push_back(s.worst);
+  double fastest = 0;
+  for (std::size_t p = 0; p < landings.size(); ++p) {
+    const auto& l = landings[p];
+    for (std::size_t i = 2; i < l.size(); ++i) {
+      if (l[i] - l[i - 2] >= 2.0) continue;
+      const double c = 2.0 / (l[i] - l[i - 2]);
+      r.cadence.values.push_back(c);
+      if (c > fastest) {
+        fastest = c;
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "seq %u, slot %zu", seq0 + static_cast<std::uint32_t>(std::lround(l[i] / 0.05)), p);
+        r.max_cadence_where = buf;
+      }
+    }
+  }
+
+  for (const AnimEvent& e : events) {
+    if (e.type != AnimEventType::Kick || e.seq < seq0) continue;
+    const std::size_t fi = e.seq - seq0;
+    if (fi >= frames.size()) continue;
+    const std::size_t p = static_cast<std::size_t>(player_index(e.side, e.unum));
+    const PlayerPose& pose = frames[fi].players[p];
+    const glm::vec3 strike = joint_point_field(skel, pose, e.foot == Foot::Right ? kRFoot : kLFoot,
+                                               glm::vec3(kStrikeLocal[0], kStrikeLocal[1], kStrikeLocal[2]));
+    const BallPose& b = frames[fi].ball;
+    const double d = std::sqrt((strike.x - b.x) * (strike.x - b.x) + (strike.y - b.y) * (strike.y - b.y) +
+                               (strike.z - b.z) * (strike.z - b.z));
+    r.contact_m.values.push_back(std::fabs(d - ball_r));
+    ++r.kicks;
+  }
+  return r;
+}
+
+bool targets_hold(const QualityReport& r) {
+  return r.root_error_m.max() <= 0.01 && r.slide_m.mean() <= 0.02 && r.contact_m.mean() <= 0.05 &&
+         r.cadence.max() <= 4.5 && r.limit_violations == 0 && r.max_jump_deg <= 15.0;
+}
+
+std::string format_report(const QualityReport& r) {
+  char buf[2048];
+  auto pf = [](bool ok) { return ok ? "PASS" : "FAIL"; };
+  std::snprintf(
+      buf, sizeof buf,
+      "frames %ld, kicks %ld\n"
+      "root error at cycles     max %.4f m  mean %.5f m          target <= 0.01 m   %s\n"
+      "planted-foot slide       mean %.4f m  p95 %.4f m  max %.4f m (%s) (%zu stances)  target mean <= 0.02 m  %s\n"
+      "foot-to-ball at contact  mean %.4f m  p95 %.4f m  max %.4f m   target <= 0.05 m   %s\n"
+      "cadence                  max %.2f steps/s (%s)  p99 %.2f  mean %.2f (%zu strides)  target <= 4.5   %s\n"
+      "joint-limit violations   %ld                              target 0           %s\n"
+      "largest joint jump       %.2f deg at %s   target <= 15 deg   %s\n"
+      "  (neck/head yaw, which follow the server's neck angle exactly: largest jump %.1f deg, not counted)\n",
+      r.frames, r.kicks, r.root_error_m.max(), r.root_error_m.mean(), pf(r.root_error_m.max() <= 0.01),
+      r.slide_m.mean(), r.slide_m.percentile(95), r.slide_m.max(), r.max_slide_where.c_str(), r.slide_m.values.size(),
+      pf(r.slide_m.mean() <= 0.02), r.contact_m.mean(), r.contact_m.percentile(95), r.contact_m.max(),
+      pf(r.contact_m.mean() <= 0.05), r.cadence.max(), r.max_cadence_where.c_str(), r.cadence.percentile(99), r.cadence.mean(),
+      r.cadence.values.size(), pf(r.cadence.max() <= 4.5), r.limit_violations, pf(r.limit_violations == 0),
+      r.max_jump_deg, r.max_jump_where.c_str(), pf(r.max_jump_deg <= 15.0), r.max_head_jump_deg);
+  return buf;
+}
+
+}  // namespace mc::anim::tools

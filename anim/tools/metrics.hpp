@@ -1,0 +1,57 @@
+// The quality metrics of an animated log, each with its target (issue 4):
+// root error at cycles, planted-foot slide, foot-to-ball distance at kick
+// contact, cadence, joint-limit violations and the largest per-frame joint
+// jump outside kicks and teleports.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "anim/animator.hpp"
+#include "proto/pose_frame.hpp"
+#include "proto/skeleton.hpp"
+#include "proto/world_state.hpp"
+
+namespace mc::anim::tools {
+
+struct Distribution {
+  std::vector<double> values;
+  double mean() const;
+  double percentile(double p) const;  // p in [0, 100]
+  double max() const;
+};
+
+struct QualityReport {
+  Distribution root_error_m;     // |pose root - 2D position| at substep-0 frames, active players
+  Distribution slide_m;          // per stance: largest horizontal distance of the ankle from its landing spot
+  Distribution contact_m;        // per kick: | |strike point - ball centre| - ball radius |
+  Distribution cadence;          // per stride (two steps): steps/s
+  long limit_violations = 0;     // angles outside their joint's limits (0.01 deg tolerance)
+  double max_jump_deg = 0;       // largest |angle change| between frames outside actions and resets
+  std::string max_jump_where;    // frame, player and dof of that jump
+  double max_head_jump_deg = 0;  // same for the neck and head yaw, which follow the server's neck angle
+  std::string max_cadence_where; // frame and player of the fastest stride
+  std::string max_slide_where;   // frame and player where the worst stance ended
+  long frames = 0, kicks = 0;
+};
+
+// Field-space position (x, y, height) of a point given in a joint's local space.
+glm::vec3 joint_point_field(const SkeletonDef& skeleton, const PlayerPose& pose, int joint, glm::vec3 local);
+
+// The point of the foot that strikes the ball: front of the foot, mid height (foot local space).
+inline constexpr float kStrikeLocal[3] = {0.19f, -0.04f, 0.0f};
+
+// Measures everything over a whole animated log. `states` are the input in
+// stream order (frames refer to them by seq / 2).
+QualityReport measure(const SkeletonDef& skeleton, const std::vector<WorldState>& states,
+                      const std::vector<PoseFrame>& frames, const std::vector<FrameInfo>& infos,
+                      const std::vector<AnimEvent>& events, double ball_radius);
+
+// Human-readable lines, one per metric with its target and PASS/FAIL.
+std::string format_report(const QualityReport& r);
+// True when every target holds.
+bool targets_hold(const QualityReport& r);
+
+}  // namespace mc::anim::tools
