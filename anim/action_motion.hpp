@@ -1,11 +1,17 @@
 // Actions layered over locomotion: kick, tackle, goalie catch and dive. An
 // ActionMotion is planned once per action (kick_planner.hpp) in field space,
 // then sampled at any time around its contact instant.
+//
+// Timing: tau is the time in seconds from the action's contact instant. A
+// kick's contact lies half-way between two simulation cycles (the paper's
+// intermediate state), so tau = 0 falls on a substep-1 frame.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "anim/anim_events.hpp"
+#include "anim/human_skeleton.hpp"
 
 namespace mc::anim {
 
@@ -16,12 +22,40 @@ struct ActionMotion {
   Foot foot = Foot::Right;       // kicking foot; the leading leg of a tackle
   float ball_x = 0, ball_y = 0;  // field m: ball at contact
   float dir_x = 1, dir_y = 0;    // field unit vector: kick / tackle / dive direction
+  float contact_x = 0, contact_y = 0, contact_h = 0;  // field: kicking ankle at contact (m)
+  float foot_yaw = 0;            // field deg: kicking sole's heading at contact
   float support_x = 0, support_y = 0;  // field m: support foot planted through contact
-  float start_s = -0.15f;        // s from contact when the motion begins (<= 0)
-  float follow_s = 0.25f;        // s after contact until the follow-through ends
-  float end_s = 0.45f;           // s after contact when locomotion has taken over again
-  float lunge_x = 0, lunge_y = 0;  // field m: root offset at contact (step-in), 0 at cycles
-  std::uint64_t contact_pos = 0; // stream position of the cycle whose half-way frame is the contact
+  float lunge_x = 0, lunge_y = 0;  // field m: root offset at the contact frame (step-in), 0 at cycles
+  float pelvis_height = 0.88f;   // m at contact
+  float side = 1;                // dive / catch side: +1 the body's right, -1 its left
+  float start_s = -0.15f;        // tau when the motion begins (<= 0)
+  float follow_s = 0.2f;         // tau when the follow-through ends (prolonged by merged kicks)
+  float end_s = 0.35f;           // tau when locomotion has taken over again
+  double contact_time_s = 0;     // stream time of the contact (s since frame 0)
+  float last_contact_s = 0;      // tau of the last kick merged into this one (0: none merged)
+  std::uint64_t last_kick_pos = 0;  // stream position of the last kick merged into this one
 };
+
+// What an action contributes to a frame.
+struct ActionSample {
+  float weight = 0;  // 0: locomotion only .. 1: the action alone
+  // Kick: targets for both ankles in field space (height in m), replacing
+  // locomotion's feet with `weight`; [0] right, [1] left.
+  bool feet = false;
+  float foot_x[2] = {0, 0}, foot_y[2] = {0, 0}, foot_h[2] = {0, 0};
+  float foot_yaw[2] = {0, 0};    // field deg
+  float foot_pitch[2] = {0, 0};  // deg, + toes up
+  bool planted[2] = {false, false};
+  float root_dx = 0, root_dy = 0;  // field m
+  float pelvis_height = 0.9f;
+  // Angles blended over locomotion's with `weight`: all dofs (tackle, catch,
+  // dive) or only the pelvis, torso and arms (kick).
+  bool whole_body = false;
+  std::array<float, dof::kCount> angles{};
+};
+
+// Samples `m` at `tau` for a player whose body heading is `heading` (field
+// deg). Returns weight 0 outside [start_s, end_s].
+ActionSample sample_action(const ActionMotion& m, float tau, float heading);
 
 }  // namespace mc::anim

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "anim/body_frame.hpp"
+#include "anim/kick_planner.hpp"
 #include "anim/player_animation.hpp"
 
 namespace mc::anim {
@@ -131,6 +132,77 @@ void Animator::emit_events(std::uint64_t pos, std::vector<AnimEvent>& events) co
   }
 }
 
+void Animator::plan_actions(std::uint64_t pos, int slot) {
+  const auto i = static_cast<std::size_t>(slot);
+  PlayerAnim& ctx = (*players_)[i];
+  const double step_s = 0.001 * params_.simulator_step_ms();
+  const float prepare_s = static_cast<float>(config_.lookahead_cycles * step_s - 0.5 * step_s);
+  const std::uint64_t last = std::min(pos + static_cast<std::uint64_t>(config_.lookahead_cycles), pushed_ - 1);
+  for (std::uint64_t k = pos + 1; k <= last; ++k) {
+    if (k + 1 <= ctx.last_action_pos) continue;  // seen by an earlier cycle
+    const Action r = raw_action(k, slot);
+    const WorldState& sk = state_at(k);
+    const WorldState& sp = state_at(k - 1);
+    const PlayerState& p = sk.players[i];
+    const PlayerState& q = sp.players[i];
+    if (r == Action::Kick) {
+      ctx.last_action_pos = k + 1;
+      const double contact = (static_cast<double>(k) - 0.5) * step_s;
+      if (ctx.motion_active && merge_kick(ctx.motion, contact, k)) continue;
+      KickPlanInput in;
+      in.root_x = static_cast<float>(0.5 * (p.x + q.x));
+      in.root_y = static_cast<float>(0.5 * (p.y + q.y));
+      in.heading = ctx.heading;
+      in.ball_x = static_cast<float>(sp.ball.x);
+      in.ball_y = static_cast<float>(sp.ball.y);
+      in.after_x = static_cast<float>(sk.ball.x);
+      in.after_y = static_cast<float>(sk.ball.y);
+      in.ball_radius = static_cast<float>(params_.ball_size());
+      in.contact_time_s = contact;
+      in.prepare_s = prepare_s;
+      in.speed = static_cast<float>(std::hypot(p.x - q.x, p.y - q.y) / step_s);
+      ctx.motion = plan_kick(in);
+      ctx.motion.last_kick_pos = k;
+      ctx.motion_active = true;
+      ctx.ball_contact_pos = k;  // the ball waits at the foot on the half-way frame of k-1
+      AnimEvent& e = ctx.kick_event;
+      e = AnimEvent{};
+      e.type = AnimEventType::Kick;
+      e.seq = static_cast<std::uint32_t>(2 * sp.index + 1);
+      e.time = sp.time;
+      e.side = p.side;
+      e.unum = p.unum;
+      e.foot = ctx.motion.foot;
+      e.contact_time_ms = static_cast<std::uint64_t>(e.seq) * kFrameIntervalMs;
+      e.play_mode = sp.play_mode;
+      e.score_left = static_cast<std::uint8_t>(sp.left.score);
+      e.score_right = static_cast<std::uint8_t>(sp.right.score);
+      ctx.kick_event_pending = true;
+      continue;
+    }
+    const bool tackle_starts = r == Action::Tackle && raw_action(k - 1, slot) != Action::Tackle;
+    if (!tackle_starts && r != Action::Catch && r != Action::Dive) continue;
+    ctx.last_action_pos = k + 1;
+    // Tackles, catches and dives happen on the cycle itself.
+    ActionMotion m;
+    m.kind = r == Action::Tackle ? MotionKind::Tackle : r == Action::Catch ? MotionKind::Catch : MotionKind::Dive;
+    m.contact_time_s = static_cast<double>(k) * step_s;
+    m.start_s = -std::min(0.15f, prepare_s + 0.05f);
+    const BodyFrame body(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.body));
+    float bx, bz;
+    body.to_body(static_cast<float>(sk.ball.x), static_cast<float>(sk.ball.y), bx, bz);
+    m.side = bz >= 0 ? 1.0f : -1.0f;
+    m.foot = bz >= 0 ? Foot::Right : Foot::Left;
+    m.ball_x = static_cast<float>(sk.ball.x);
+    m.ball_y = static_cast<float>(sk.ball.y);
+    const float tackle_s = static_cast<float>(params_.server.number("tackle_cycles", 10) * step_s);
+    m.follow_s = m.kind == MotionKind::Tackle ? tackle_s : 0.2f;
+    m.end_s = m.kind == MotionKind::Tackle ? tackle_s + 0.3f : m.kind == MotionKind::Catch ? 0.5f : 0.9f;
+    ctx.motion = m;
+    ctx.motion_active = true;
+  }
+}
+
 void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::vector<AnimEvent>* events) {
   const WorldState& a = state_at(pos);
   const bool has_next = pos + 1 < pushed_;
@@ -156,6 +228,9 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
                                                                          : smoothed_heading(pos + 1, i);
   }
   if (events != nullptr) emit_events(pos, *events);
+  const bool actions_on = detail == DetailLevel::Kick || detail == DetailLevel::Full;
+  const double step_s = 0.001 * params_.simulator_step_ms();
+  for (int i = 0; i < kMaxPlayers; ++i) plan_actions(pos, i);
 
   for (int sub = 0; sub < kFramesPerCycle; ++sub) {
     const float t = 0.5f * static_cast<float>(sub);
@@ -171,6 +246,13 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
     f.ball.x = lerpf(a.ball.x, b.ball.x, t);
     f.ball.y = lerpf(a.ball.y, b.ball.y, t);
     f.ball.z = ball_r;
+    // A kick's contact: the ball is still where it was kicked from.
+    if (sub == 1 && actions_on)
+      for (const PlayerAnim& pa : *players_)
+        if (pa.motion_active && pa.ball_contact_pos == pos + 1) {
+          f.ball.x = static_cast<float>(a.ball.x);
+          f.ball.y = static_cast<float>(a.ball.y);
+        }
     FrameInfo* info = nullptr;
     if (info_sink_ != nullptr) {
       info = &info_sink_->emplace_back();
@@ -204,11 +286,25 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       in.reset = (sub == 0 && act[i] == Action::Teleport) || !pa.active() || !ctx.was_active;
       in.animate_locomotion = loco_on && pa.active();
       in.dt = 0.001f * static_cast<float>(params_.simulator_step_ms()) / kFramesPerCycle;
+      // The action playing at this frame, if any.
+      ActionSample sample;
+      const double now = (static_cast<double>(pos) + 0.5 * sub) * step_s;
+      if (ctx.motion_active) {
+        const float tau = static_cast<float>(now - ctx.motion.contact_time_s);
+        if (tau > ctx.motion.end_s + 1e-4f) ctx.motion_active = false;
+        else if (actions_on && pa.active()) sample = sample_action(ctx.motion, tau, ctx.heading);
+      }
+      if (sample.weight > 0) in.layer = &sample;
+      if (ctx.kick_event_pending && ctx.kick_event.seq == f.seq) {
+        ctx.kick_event_pending = false;
+        if (events != nullptr) events->push_back(ctx.kick_event);
+      }
       bool planted[2] = {false, false};
       animate_player(ctx, in, lp, skeleton_, pose, planted);
       if (info != nullptr) {
         PlayerFrameInfo& pi = info->players[i];
         pi.action = in.action;
+        pi.in_action = sample.weight > 0;
         pi.reset = in.reset;
         pi.planted[0] = planted[0];
         pi.planted[1] = planted[1];

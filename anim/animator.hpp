@@ -80,6 +80,7 @@ class Animator {
   float smoothed_heading(std::uint64_t pos, int slot) const;
   void emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::vector<AnimEvent>* events);
   void emit_events(std::uint64_t pos, std::vector<AnimEvent>& events) const;
+  void plan_actions(std::uint64_t pos, int slot);
 
   const SkeletonDef& skeleton_;
   GameParams params_;

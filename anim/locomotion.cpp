@@ -49,6 +49,20 @@ float human_step_length(float v) {
   return kL.back() * v / kV.back();
 }
 
+void take_over_feet(LocomotionState& s, const float x[2], const float y[2], const float yaw[2],
+                    const bool planted[2]) {
+  for (int i = 0; i < 2; ++i) {
+    FootState& f = s.feet[i];
+    f.x = f.from_x = f.to_x = x[i];
+    f.y = f.from_y = f.to_y = y[i];
+    f.yaw = f.from_yaw = yaw[i];
+    f.lift = 0;
+    if (planted[i] && !f.planted) { f.planted_frames = 0; f.stance_phase = 0; }
+    f.planted = planted[i];
+    f.progress = planted[i] ? 0.0f : 0.5f;
+  }
+}
+
 void step_locomotion(LocomotionState& s, const LocomotionInput& in, const LocomotionParams& prm,
                      LocomotionOutput& out) {
   const BodyFrame body(in.x, in.y, in.heading);

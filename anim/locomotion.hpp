@@ -74,6 +74,11 @@ struct LocomotionOutput {
 // before the cadence cap; increasing in speed.
 float human_step_length(float speed_mps);
 
+// An action (a kick) placed the feet: take them over so that locomotion
+// resumes from where they are. Field positions (m) and sole yaws (deg).
+void take_over_feet(LocomotionState& state, const float x[2], const float y[2], const float yaw[2],
+                    const bool planted[2]);
+
 // Advances `state` by one frame. Deterministic; no allocation.
 void step_locomotion(LocomotionState& state, const LocomotionInput& in, const LocomotionParams& params,
                      LocomotionOutput& out);

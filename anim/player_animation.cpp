@@ -1,6 +1,7 @@
 #include "anim/player_animation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "anim/body_frame.hpp"
@@ -41,7 +42,6 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   LocomotionOutput lo;
   step_locomotion(ctx.loco, li, lp, lo);
   ctx.action = in.action;
-  if (planted != nullptr) { planted[0] = lo.planted[0]; planted[1] = lo.planted[1]; }
 
   std::span<float> a(out.angles.data(), static_cast<std::size_t>(dof::kCount));
   std::fill(out.angles.begin(), out.angles.end(), 0.0f);
@@ -79,17 +79,61 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   a[dof::kNeck + 1] = 0.5f * lean;  // keep the eyes level against the lean
   a[dof::kHead + 1] = 0.3f * lean;
 
+  float px = in.x, py = in.y, pelvis_h = lo.pelvis_height;
+  FootTarget feet[2] = {lo.feet[0], lo.feet[1]};
+  const ActionSample* act = in.layer;
+  const float w = act != nullptr ? act->weight : 0.0f;
+  if (act != nullptr && w > 0) {
+    px += act->root_dx;
+    py += act->root_dy;
+    pelvis_h += (act->pelvis_height - pelvis_h) * w;
+    const int upper = dof::kRHip;  // pelvis, torso, arms; legs after IK below
+    for (int d = 0; d < upper; ++d) {
+      if (d >= dof::kNeck && d < dof::kRShoulder && !act->whole_body) continue;  // the head keeps the gaze
+      a[static_cast<std::size_t>(d)] += (act->angles[static_cast<std::size_t>(d)] - a[static_cast<std::size_t>(d)]) * w;
+    }
+  }
+  if (act != nullptr && w > 0 && act->feet) {
+    // The kick places both feet in field space; blend from locomotion's.
+    const BodyFrame body(px, py, heading);
+    for (int i = 0; i < 2; ++i) {
+      float bx, bz;
+      body.to_body(act->foot_x[i], act->foot_y[i], bx, bz);
+      FootTarget& f = feet[i];
+      f.ankle_ms[0] += (bx - f.ankle_ms[0]) * w;
+      f.ankle_ms[1] += (act->foot_h[i] - f.ankle_ms[1]) * w;
+      f.ankle_ms[2] += (bz - f.ankle_ms[2]) * w;
+      f.yaw_deg += (-delta_deg(act->foot_yaw[i], heading) - f.yaw_deg) * w;
+      f.pitch_deg += (act->foot_pitch[i] - f.pitch_deg) * w;
+    }
+    if (w > 0.99f) {
+      const float yaw[2] = {act->foot_yaw[0], act->foot_yaw[1]};
+      take_over_feet(ctx.loco, act->foot_x, act->foot_y, yaw, act->planted);
+      ctx.loco.pelvis_height = pelvis_h;
+      lo.planted[0] = act->planted[0];
+      lo.planted[1] = act->planted[1];
+    }
+  } else if (act != nullptr && w > 0.5f) {
+    lo.planted[0] = lo.planted[1] = false;  // tackles, catches, dives: feet are not held
+  }
   LegPoseJob legs;
-  legs.pelvis_height = lo.pelvis_height;
-  legs.feet[0] = lo.feet[0];
-  legs.feet[1] = lo.feet[1];
+  legs.pelvis_height = pelvis_h;
+  legs.feet[0] = feet[0];
+  legs.feet[1] = feet[1];
   legs.angles = a;
   legs.Run();
+  if (act != nullptr && act->whole_body && w > 0) {  // the action's own leg pose over the IK legs
+    for (int d = dof::kRHip; d < dof::kCount; ++d) {
+      const auto k = static_cast<std::size_t>(d);
+      a[k] += (act->angles[k] - a[k]) * w;
+    }
+  }
   clamp_to_limits(limits_from, a);
+  if (planted != nullptr) { planted[0] = lo.planted[0]; planted[1] = lo.planted[1]; }
 
-  out.x = in.x;
-  out.y = in.y;
-  out.z = lo.pelvis_height;
+  out.x = px;
+  out.y = py;
+  out.z = pelvis_h;
   out.heading = heading;
 }
 

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "anim/action_motion.hpp"
+#include "anim/anim_events.hpp"
 #include "anim/classifier.hpp"
 #include "anim/locomotion.hpp"
 #include "proto/pose_frame.hpp"
@@ -17,6 +18,13 @@ namespace mc::anim {
 struct PlayerAnim {
   LocomotionState loco;
   float heading = 0;           // heading of the previous frame, field deg (rate-limited)
+  // The action playing or about to play (kick_planner.hpp), and its bookkeeping.
+  ActionMotion motion;
+  bool motion_active = false;
+  std::uint64_t last_action_pos = 0;  // stream position + 1 of the last action planned or merged
+  std::uint64_t ball_contact_pos = 0;  // the ball waits on the half-way frame before this cycle
+  bool kick_event_pending = false;    // a Kick event waits for its contact frame
+  AnimEvent kick_event;
   Action action = Action::Stand;
   bool was_active = false;
 };
@@ -36,8 +44,7 @@ struct PlayerFrameInput {
   bool reset = false;          // teleport or (re)connection: feet under the body
   bool animate_locomotion = true;  // detail level: false -> glide standing
   float dt = 0.05f;
-  const ActionMotion* motion = nullptr;  // an action layered over locomotion, or null
-  float motion_time = 0;       // s since the action's contact (negative before)
+  const ActionSample* layer = nullptr;  // an action layered over locomotion at this frame, or null
 };
 
 // Writes x, y, z, heading and the angles of `out` (side, unum, state are the
