@@ -60,6 +60,8 @@ LineReader::Result LineReader::next(std::string_view& line, std::uint64_t& offse
     if (!fill()) {
       const std::size_t rest = end_ - begin_;
       if (skipping) {
+        begin_ = end_;  // the tail of the dropped line
+        scan_ = 0;
         offset = skip_start;
         return Result::TooLong;
       }

@@ -70,11 +70,13 @@ std::string show_text(const WorldState& s, int version) {
     o += ' ';
   }
   o.back() = ')';
-  for (const PlayerState& p : s.players) {
+  for (int i = 0; i < kMaxPlayers; ++i) {
+    const PlayerState& p = s.players[static_cast<std::size_t>(i)];
+    // Side and number from the slot: the order rcssserver uses.
     o += " ((";
-    o += side_name(p.side);
+    o += i < kPlayersPerSide ? 'l' : 'r';
     o += ' ';
-    put_int(o, p.unum);
+    put_int(o, i % kPlayersPerSide + 1);
     o += ") ";
     put_int(o, p.type);
     o += ' ';
@@ -144,8 +146,9 @@ json team_json(const TeamInfo& t) {
 
 std::string show_json(const WorldState& s) {
   json players = json::array();
-  for (const PlayerState& p : s.players) {
-    json j{{"side", side_name(p.side)}, {"unum", p.unum}, {"type", p.type}, {"state", p.state},
+  for (int i = 0; i < kMaxPlayers; ++i) {
+    const PlayerState& p = s.players[static_cast<std::size_t>(i)];
+    json j{{"side", i < kPlayersPerSide ? "l" : "r"}, {"unum", i % kPlayersPerSide + 1}, {"type", p.type}, {"state", p.state},
            {"x", p.x}, {"y", p.y}, {"vx", p.vx}, {"vy", p.vy}, {"body", p.body}, {"neck", p.neck}};
     if (p.point) {
       j["px"] = (*p.point)[0];

@@ -49,7 +49,12 @@ bool Feeder::open(std::string& error) {
     error = main_.error();
     return false;
   }
-  return open_log(error) && advance(error);
+  if (!open_log(error) || !advance(error)) return false;
+  if (!have_pending_) {
+    error = "log " + config_.log_path + " has no shows";
+    return false;
+  }
+  return true;
 }
 
 bool Feeder::open_log(std::string& error) {

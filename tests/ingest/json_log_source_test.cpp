@@ -1,0 +1,103 @@
+// JSON logs: the element splitter (braces inside strings, cuts, over-long
+// elements), the three flavours, and bad elements counted with offsets.
+#include "server/ingest/json_splitter.hpp"
+
+#include <gtest/gtest.h>
+
+#include "server/ingest/state_source.hpp"
+#include "tests/ingest/test_data.hpp"
+
+namespace mc::ingest {
+namespace {
+
+const char* kShow =
+    R"({"show":{"time":5,"ball":{"x":1.5,"y":-0,"vx":0,"vy":0},"players":[{"side":"r","unum":3,"type":2,)"
+    R"("state":4097,"x":10,"y":-2,"vx":0,"vy":0,"body":-90,"neck":30,"px":1,"py":2,"vq":"l","vw":60,)"
+    R"("stamina":7000.5,"effort":0.9,"recovery":1,"capacity":1000,"fside":"l","fnum":9,"kick":1,"dash":2,)"
+    R"("turn":3,"catch":0,"move":1,"turn_neck":0,"change_view":0,"say":0,"tackle":1,"pointto":0,)"
+    R"("attentionto":0,"change_focus":0}]}})";
+
+std::vector<WorldState> read(std::string_view bytes, IngestStats* st = nullptr) {
+  std::string err;
+  auto src = open_log_memory(bytes, err);
+  EXPECT_TRUE(src) << err;
+  std::vector<WorldState> v;
+  WorldState s;
+  while (src && src->next(s)) v.push_back(s);
+  if (src && st) *st = src->stats();
+  return v;
+}
+
+TEST(JsonSplitter, BracesInStringsAndCuts) {
+  const std::string text = R"x([{"msg":{"message":"(x { } \" {)"}}, {"a":{"b":{}}}, {"cut":)x";
+  auto src = open_memory_source(text);
+  JsonSplitter sp(*src);
+  std::string_view obj;
+  std::uint64_t off = 0;
+  ASSERT_EQ(sp.next(obj, off), JsonSplitter::Result::Object);
+  EXPECT_EQ(obj, R"x({"msg":{"message":"(x { } \" {)"}})x");
+  EXPECT_EQ(off, 1u);
+  ASSERT_EQ(sp.next(obj, off), JsonSplitter::Result::Object);
+  EXPECT_EQ(obj, R"({"a":{"b":{}}})");
+  EXPECT_EQ(sp.next(obj, off), JsonSplitter::Result::Truncated);
+  EXPECT_EQ(sp.next(obj, off), JsonSplitter::Result::End);
+}
+
+TEST(JsonSplitter, OverlongElementsAreSkipped) {
+  const std::string text = "[{\"a\":\"" + std::string(5000, 'x') + "\"},{\"b\":1}]";
+  auto src = open_memory_source(text);
+  JsonSplitter sp(*src, 1000);
+  std::string_view obj;
+  std::uint64_t off = 0;
+  EXPECT_EQ(sp.next(obj, off), JsonSplitter::Result::TooLong);
+  ASSERT_EQ(sp.next(obj, off), JsonSplitter::Result::Object);
+  EXPECT_EQ(obj, "{\"b\":1}");
+}
+
+TEST(JsonLogSource, Flavour19Fields) {
+  const std::string log = std::string("[\n{\"version\":\"19.0.0\"},\n{\"playmode\":{\"time\":1,\"mode\":\"play_on\"}},\n"
+                                      "{\"team\":{\"time\":1,\"l\":{\"name\":\"A\",\"score\":1},\"r\":{\"name\":\"B\",\"score\":2}}},\n") +
+                          kShow + "\n]";
+  const auto v = read(log);
+  ASSERT_EQ(v.size(), 1u);
+  const WorldState& s = v[0];
+  EXPECT_EQ(s.play_mode, PlayMode::PlayOn);
+  EXPECT_EQ(s.right.score, 2);
+  const PlayerState& p = s.players[player_index(Side::Right, 3)];
+  EXPECT_EQ(p.state, 4097u);
+  EXPECT_EQ(p.view_quality, 'l');
+  ASSERT_TRUE(p.point && p.capacity && p.attention);
+  EXPECT_EQ(p.attention->second, 9);
+  EXPECT_EQ(p.counters.count, 12);
+  EXPECT_EQ(p.counters.tackle, 1u);
+  EXPECT_EQ(s.players[0].state, 0u);  // absent slot
+}
+
+TEST(JsonLogSource, Flavours17And18) {
+  const std::string show17 =
+      R"({"type":"show","time":7,"ball":{"x":0,"y":0},"players":[]})";
+  EXPECT_EQ(read("ULG6\n[\n" + show17 + "\n]").size(), 1u);
+  EXPECT_EQ(read("JSON\n[\n{\"type\":\"header\"},\n" + show17 + "\n]").size(), 1u);
+}
+
+TEST(JsonLogSource, BadElementsAreCountedAndSkipped) {
+  IngestStats st;
+  const std::string log = std::string("[\n{\"show\":{\"time\":\"x\"}},\n{not json},\n") + kShow + ",\n" + kShow;
+  const auto v = read(log.substr(0, log.size() - 10), &st);  // last one cut
+  EXPECT_EQ(v.size(), 1u);
+  EXPECT_EQ(st.skipped, 3u);
+  ASSERT_EQ(st.errors.size(), 3u);
+  EXPECT_NE(st.errors[0].find("offset 2"), std::string::npos) << st.errors[0];
+}
+
+TEST(JsonLogSource, RealLogTruncated) {
+  const std::string all = testing::decoded(testing::rcg("generated/gen19-json-20261122030023-Alpha_1-vs-Beta_1.rcg.gz"));
+  IngestStats st;
+  const auto v = read(std::string_view(all).substr(0, all.size() / 2), &st);
+  EXPECT_GT(v.size(), 200u);
+  EXPECT_LT(v.size(), 699u);
+  EXPECT_EQ(st.skipped, 1u);
+}
+
+}  // namespace
+}  // namespace mc::ingest
