@@ -53,7 +53,7 @@ class MonitorClient final : public StateSource {
   bool poll_event(SourceEvent& out) override { return stream_.poll_event(out); }
 
   // Thread-safe: makes a blocked next() return false within ~50 ms.
-  void stop() { stopping_ = true; }
+  void stop() override { stopping_ = true; }
   bool connected() const { return connected_; }
   // The server's per-monitor port (0 before the first reply).
   std::uint16_t server_port() const { return server_.port; }

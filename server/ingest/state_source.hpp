@@ -77,6 +77,10 @@ class StateSource {
     (void)timeout;
     return next(out) ? Wait::State : Wait::End;
   }
+
+  // Thread-safe: makes a blocked next() of a live source return false soon
+  // (within ~50 ms). No effect on logs.
+  virtual void stop() {}
 };
 
 // Opens any .rcg (format sniffed from the first bytes, gzip or plain):
@@ -85,5 +89,13 @@ class StateSource {
 std::unique_ptr<StateSource> open_log(const std::string& path, std::string& error);
 // The same over bytes in memory (kept alive by the caller); for tests/fuzzing.
 std::unique_ptr<StateSource> open_log_memory(std::string_view bytes, std::string& error);
+
+// A log path, or a live rcssserver as "udp://HOST:PORT" ("udp://" alone =
+// 127.0.0.1:6000; "udp://HOST:PORT/V" picks monitor version V: 5 by
+// default, 4, 3 or -1 for JSON). Live sources never fail to open: they keep
+// trying to connect (see monitor_client.hpp). nullptr + error for a bad
+// spec or an unreadable log.
+std::unique_ptr<StateSource> open_source(const std::string& spec, std::string& error);
+bool is_live_spec(const std::string& spec);
 
 }  // namespace mc::ingest
