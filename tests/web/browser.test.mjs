@@ -3,19 +3,20 @@
 // switches (screenshot each), a click chooses a player, bad input gives a
 // message and a resync, a phone-sized screen works, and the page survives a
 // server restart. Screenshots go to $MATCHCAST_OUTPUT_DIR (test-output/web).
-import { after, before, describe, test } from 'node:test';
+import { after, afterEach, before, beforeEach, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launchBrowser, openPage, shot, startServer, stats, waitFor } from './harness.mjs';
 
 const CAMERAS = ['broadcast', 'orbit', 'free', 'player', 'follow', 'goal', 'top'];
 
 describe('web page against matchcast-server', { timeout: 240000 }, () => {
+  // One page at a time: software WebGL on a busy machine is slow, and the
+  // pages of one browser share its GPU process.
   let server, browser, page, errors;
 
   before(async () => {
     server = await startServer();
     browser = await launchBrowser();
-    ({ page, errors } = await openPage(browser, server.url));
   });
 
   after(async () => {
@@ -23,8 +24,25 @@ describe('web page against matchcast-server', { timeout: 240000 }, () => {
     await server?.stop();
   });
 
+  beforeEach(async () => {
+    ({ page, errors } = await openPage(browser, server.url));
+  });
+
+  afterEach(async () => {
+    await page?.context().close().catch(() => {});
+  });
+
+  // The page is drawing frames: 22 players in the interpolated view.
+  const settle = async (n = 3) => {
+    const r = (await stats(page)).rendered;
+    await waitFor(page, async () => (await stats(page)).rendered > r + n, 'rendered pictures', 20000);
+  };
+  const drawing = () => waitFor(page, () => page.evaluate(() =>
+    window.matchcast?.playerPositions().filter((p) => p.state !== 0).length === 22), 'a drawn frame', 30000);
+
   test('frames decode and 22 players and the ball move', async () => {
     await waitFor(page, async () => (await stats(page))?.decoded > 20, 'decoded frames');
+    await drawing();
     const s = await stats(page);
     assert.equal(s.hello, true);
     assert.equal(s.decodeErrors, 0, 'no decoder errors');
@@ -43,12 +61,15 @@ describe('web page against matchcast-server', { timeout: 240000 }, () => {
   });
 
   test('every camera switches by its button and by its key', async () => {
+    await drawing();
     for (const [i, cam] of CAMERAS.entries()) {
       const before = await page.evaluate(() => window.matchcast.cameraPosition());
       if (i % 2) await page.keyboard.press(String(i + 1));
       else await page.click(`[data-camera="${cam}"]`);
       await waitFor(page, async () => (await stats(page)).camera === cam, `camera ${cam}`, 5000);
-      await page.waitForTimeout(1200);
+      // Let the camera settle: a few rendered pictures, however slow.
+      const r = (await stats(page)).rendered;
+      await waitFor(page, async () => (await stats(page)).rendered > r + 3, 'rendered pictures', 20000);
       const now = await page.evaluate(() => window.matchcast.cameraPosition());
       if (cam !== 'free' && cam !== 'orbit') {
         assert.ok(Math.hypot(now[0] - before[0], now[1] - before[1], now[2] - before[2]) > 0.5,
@@ -56,12 +77,12 @@ describe('web page against matchcast-server', { timeout: 240000 }, () => {
       }
       await page.screenshot({ path: shot(`camera-${cam}`) });
     }
-    await page.click('[data-camera="broadcast"]');
   });
 
   test('clicking a player chooses it and shows its card', async () => {
+    await drawing();
     await page.click('[data-camera="top"]');
-    await page.waitForTimeout(800);
+    await settle();
     const target = await page.evaluate(() => {
       const mc = window.matchcast;
       for (const p of mc.playerPositions()) {
@@ -76,24 +97,25 @@ describe('web page against matchcast-server', { timeout: 240000 }, () => {
     await page.mouse.click(target.at.x, target.at.y);
     const sel = await waitFor(page, async () => (await stats(page)).selected, 'a chosen player', 5000);
     assert.ok(sel, 'a player is chosen');
-    assert.equal(await page.isVisible('#player-card'), true);
+    await waitFor(page, () => page.isVisible('#player-card'), 'the player card', 10000);
+    assert.match(await page.textContent('#pc-name'), new RegExp(`^#${sel.split(':')[1]}\\b`));
     await page.click('[data-camera="follow"]');
-    await page.waitForTimeout(1200);
+    await settle();
     await page.screenshot({ path: shot('chosen-player-follow') });
-    await page.click('[data-camera="broadcast"]');
   });
 
   test('overlays toggle', async () => {
+    await drawing();
     await page.click('[data-toggle="offside"]');
     await page.click('[data-toggle="reach"]');
-    await page.waitForTimeout(800);
+    await settle();
     await page.screenshot({ path: shot('overlays') });
     assert.equal(await page.getAttribute('[data-toggle="offside"]', 'class'), 'on');
-    await page.click('[data-toggle="offside"]');
-    await page.click('[data-toggle="reach"]');
+    assert.equal(await page.getAttribute('[data-toggle="reach"]', 'class'), 'on');
   });
 
   test('bad messages give a visible message and the page resyncs', async () => {
+    await page.context().close();  // this test opens its own, routed page
     const ctx = await browser.newContext({ viewport: { width: 1024, height: 640 } });
     const p = await ctx.newPage();
     const pageErrors = [];
@@ -108,18 +130,37 @@ describe('web page against matchcast-server', { timeout: 240000 }, () => {
     await waitFor(p, async () => (await stats(p)).decodeErrors >= 2, 'decode errors counted', 5000);
     assert.equal(await p.isVisible('#toast'), true, 'a visible message');
     const after = (await stats(p)).decoded;
-    await waitFor(p, async () => (await stats(p)).decoded > after + 20, 'decoding again after a keyframe', 10000);
+    await waitFor(p, async () => (await stats(p)).decoded > after + 20, 'decoding again after a keyframe', 20000);
     await p.screenshot({ path: shot('bad-input') });
     assert.deepEqual(pageErrors, []);
     await ctx.close();
   });
 
+  test('goal banner and kick sounds fire as the picture reaches them (log at 4x)', async () => {
+    // A second server plays the log at 4x: its first goal (cycle 720) is
+    // about 18 s in. The page follows the faster stream rate.
+    const fast = await startServer({ args: ['--speed', '4'] });
+    try {
+      await page.goto(`${fast.url}?fixed-quality&stats`);
+      const s = await waitFor(page, async () => {
+        const st = await stats(page);
+        return st?.banner && /GOAL/.test(st.banner.text) ? st : null;
+      }, 'a goal banner', 90000, 500);
+      assert.equal(s.banner.kind, 'goal');
+      assert.ok(s.kicks > 0 && s.sounds > 0, `kick sounds (${s.kicks})`);
+      assert.ok(s.resyncs <= 1, `the playhead kept up with the 4x stream (${s.resyncs} resyncs)`);
+      await page.screenshot({ path: shot('goal-banner') });
+    } finally {
+      await fast.stop();
+    }
+  });
+
   test('a phone-sized screen keeps the HUD apart', async () => {
+    await page.context().close();  // this test opens its own, phone-sized page
     const ctx = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 1, isMobile: true, hasTouch: true });
     const p = await ctx.newPage();
     await p.goto(`${server.url}?fixed-quality&stats`);
-    await waitFor(p, async () => (await stats(p))?.decoded > 10, 'frames on a phone');
-    await p.waitForTimeout(1500);
+    await waitFor(p, async () => (await stats(p))?.rendered > 5 && (await stats(p)).decoded > 10, 'frames on a phone', 30000);
     const boxes = await p.evaluate(() => ['scoreboard', 'controls', 'stats'].map((id) => {
       const r = document.getElementById(id).getBoundingClientRect();
       return { id, left: r.left, right: r.right, top: r.top, bottom: r.bottom };
@@ -132,6 +173,7 @@ describe('web page against matchcast-server', { timeout: 240000 }, () => {
   });
 
   test('the page survives a server restart', async () => {
+    await drawing();
     const port = server.port;
     const connects = (await stats(page)).connects;
     await server.stop();

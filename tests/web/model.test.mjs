@@ -99,3 +99,18 @@ test('the skeleton is read from the hello and bad ones are refused', () => {
   assert.throws(() => normalizeSkeleton({ joints: [{ parent: 1 }] }));
   assert.throws(() => normalizeSkeleton({}));
 });
+
+test('the playhead follows a stream that runs faster than real time', () => {
+  const jb = new JitterBuffer({ frameMs: 50, delayFrames: 3 });
+  let now = 0, seq = 0;
+  // 4x: a frame every 12.5 ms, the renderer at 60 Hz.
+  for (let ms = 0; ms < 3000; ms += 1) {
+    if (ms % 12.5 < 1) jb.push(frame(seq++), ms);
+    if (ms % 16 === 0) jb.sample(ms);
+    now = ms;
+  }
+  assert.ok(Math.abs(jb.speed - 4) < 0.3, `speed ${jb.speed}`);
+  assert.ok(jb.newest.seq - jb.playhead < 30, `playhead keeps up (${jb.newest.seq - jb.playhead} behind)`);
+  assert.ok(jb.resyncs <= 1, `no repeated resyncs (${jb.resyncs})`);
+  assert.ok(now > 0);
+});

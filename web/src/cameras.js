@@ -85,10 +85,13 @@ export class Cameras {
     switch (this.mode) {
       case 'broadcast': {
         // From the main stand on the +y side, level with the ball, zoomed.
+        // A portrait screen sees little width: come closer and higher.
         const bx = THREE.MathUtils.clamp(ball.x, -F.length / 2, F.length / 2);
-        this.goal.set(bx * 0.8, 21, F.width / 2 + 40);
-        this.lookGoal.set(bx, 0, THREE.MathUtils.clamp(ball.z, -F.width / 2, F.width / 2) * 0.6);
-        this.fovGoal = aspect < 1 ? 48 : 28;
+        const bz = THREE.MathUtils.clamp(ball.z, -F.width / 2, F.width / 2);
+        if (aspect < 1) this.goal.set(bx * 0.9, 30, F.width / 2 + 22);
+        else this.goal.set(bx * 0.8, 22, F.width / 2 + 40);
+        this.lookGoal.set(bx, 0, bz * 0.7);
+        this.fovGoal = aspect < 1 ? 50 : 24;
         break;
       }
       case 'orbit': {

@@ -23,7 +23,7 @@ import { STATE } from './model/playmodes.js';
 
 const params = new URLSearchParams(location.search);
 const canvas = document.getElementById('view');
-const stage = createStage(canvas);
+const stage = createStage(canvas, { antialias: params.get('aa') !== '0', shadows: params.get('shadows') !== '0' });
 const hud = new Hud();
 const sound = new KickSound();
 const events = new EventDetector();
@@ -105,7 +105,7 @@ function startStream() {
       if (state === 'connecting' && counters.hellos === 0) hud.status('Connecting to the match feed…');
       else if (state === 'lost') {
         const s = Math.max(1, Math.round(info.delay / 1000));
-        hud.status(`Feed lost (${info.reason}). Reconnecting in ${s} s…`, true);
+        hud.status(`Feed lost. Reconnecting in ${s} s… (${info.reason})`, true);
       } else if (state === 'silent') hud.status('The feed has gone quiet. Waiting for data…', true);
     },
     onText(msg) {
@@ -271,6 +271,7 @@ function onEvents(list, playhead) {
 
 let lastNow = performance.now();
 const fpsWindow = [];
+let renderMs = 0, updateMs = 0;
 let lastStats = 0, lastBytes = 0, kbps = 0, lastAdapt = performance.now() + 2000;
 
 function frameLoop(now) {
@@ -293,7 +294,10 @@ function frameLoop(now) {
   }
   const hide = cameras.update(dt, { ball: view?.ball ?? { x: 0, y: 0, z: 0 }, players, selected });
   if (players && players.hiddenKey !== hide) players.hiddenKey = hide;
+  const t0 = performance.now();
   stage.renderer.render(stage.scene, stage.camera);
+  renderMs += (performance.now() - t0 - renderMs) * 0.1;
+  updateMs += (t0 - now - updateMs) * 0.1;
   counters.rendered++;
 
   fpsWindow.push(now);
@@ -322,7 +326,7 @@ window.matchcast = Object.freeze({
     fps: fpsWindow.length, kbps, seq: view?.seq ?? null, time: view?.time ?? null,
     playMode: view?.playMode ?? null, selected, hello: !!match,
     teams: match ? [hud.teams[1].name, hud.teams[-1].name] : null,
-    banner: hud.lastBanner ?? null, sounds: sound.played,
+    banner: hud.lastBanner ?? null, sounds: sound.played, renderMs, updateMs, scale: stage.scale,
   }),
   playerPositions: () => (view ? view.players.map((p) => ({ side: p.side, unum: p.unum, state: p.state,
     x: p.x, y: p.y, z: p.z, heading: p.heading })) : []),

@@ -18,10 +18,13 @@ export class JitterBuffer {
   }
 
   reset() {
+    this.arrivals = [];        // [nowMs, seq] of the last second, for the rate
+    this.rate = 1000 / this.frameMs;  // frames per second the stream delivers
     this.frames = [];          // sorted by seq
     this.playhead = null;      // seq units, fractional
     this.lastNow = null;
     this.newestArrival = 0;
+    this.firstArrival = null;
     this.dropped = 0;          // stream frames that never arrived (seq gaps)
     this.late = 0;             // frames that arrived behind the playhead
     this.resyncs = 0;
@@ -57,15 +60,40 @@ export class JitterBuffer {
     }
     this.frames.push(frame);
     this.newestArrival = nowMs;
+    this._measureRate(frame.seq, nowMs);
     if (this.frames.length > this.capacity) this.frames.splice(0, this.frames.length - this.capacity);
     return true;
   }
 
-  // Where the playhead should be now.
+  // The stream's rate over the last second or so: a relay that plays a
+  // recording at 4x sends frames four times as fast, and the playhead
+  // follows. Clamped to 1/8x .. 16x of the nominal rate.
+  _measureRate(seq, nowMs) {
+    // A new connection starts with a burst (the relay's catch-up from the
+    // last keyframe): it says nothing about the rate.
+    this.firstArrival ??= nowMs;
+    if (nowMs - this.firstArrival < 150) return;
+    const a = this.arrivals;
+    a.push([nowMs, seq]);
+    while (a.length > 2 && nowMs - a[0][0] > 2000) a.shift();
+    const span = nowMs - a[0][0];
+    if (a.length >= 6 && span > 250) {
+      const nominal = 1000 / this.frameMs;
+      const r = ((seq - a[0][1]) * 1000) / span;
+      this.rate = Math.max(nominal / 8, Math.min(nominal * 16, r));
+    }
+  }
+
+  // Playback speed relative to the nominal frame rate (1 = real time).
+  get speed() { return (this.rate * this.frameMs) / 1000; }
+
+  // Where the playhead should be now: delayFrames (at the nominal rate)
+  // of time behind the newest frame.
   target(nowMs) {
     const newest = this.newest;
-    const age = Math.min(nowMs - this.newestArrival, this.frameMs * 2) / this.frameMs;
-    return newest.seq + age - this.delayFrames;
+    const perMs = this.rate / 1000;
+    const age = Math.min(nowMs - this.newestArrival, this.frameMs * 2) * perMs;
+    return newest.seq + age - this.delayFrames * this.speed;
   }
 
   // Advances the playhead to nowMs. Returns null if there is nothing to show,
@@ -82,9 +110,9 @@ export class JitterBuffer {
       prev = this.playhead;
     } else {
       const dt = Math.max(0, Math.min(nowMs - this.lastNow, 1000));
-      this.playhead += dt / this.frameMs;
+      this.playhead += (dt * this.rate) / 1000;
       const err = target - this.playhead;
-      if (Math.abs(err) > 20) {
+      if (Math.abs(err) > 20 * Math.max(1, this.speed)) {
         this.playhead = target;
         prev = target;
         this.resyncs++;
@@ -115,6 +143,6 @@ export class JitterBuffer {
   // How far behind the newest received frame the picture is, in ms.
   lagMs() {
     if (this.playhead === null || !this.newest) return 0;
-    return (this.newest.seq - this.playhead) * this.frameMs;
+    return ((this.newest.seq - this.playhead) * 1000) / this.rate;
   }
 }

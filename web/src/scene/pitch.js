@@ -161,15 +161,26 @@ export function createPitch(F, renderer) {
     board.receiveShadow = true;
     group.add(board);
   }
-  // A stepped stand behind the far touchline (the broadcast camera's
-  // background) with alternating seat colours.
-  for (let i = 0; i < 8; i++) {
-    const tier = new THREE.Mesh(new THREE.BoxGeometry(F.length + 24, 0.8 + i * 0.8, 1.6),
-      new THREE.MeshStandardMaterial({ color: i % 2 ? 0x35507a : 0x2b4266, roughness: 0.9 }));
-    tier.position.set(0, (0.8 + i * 0.8) / 2, -(H / 2 + 4 + i * 1.6));
-    tier.receiveShadow = true;
-    group.add(tier);
-  }
+  // Stepped stands with alternating seat colours behind the far touchline
+  // (the broadcast camera's background) and behind both goals.
+  const seat = [new THREE.MeshStandardMaterial({ color: 0x2b4266, roughness: 0.9 }),
+    new THREE.MeshStandardMaterial({ color: 0x35507a, roughness: 0.9 })];
+  const stand = (length, x, z, rotY) => {
+    const g = new THREE.Group();
+    for (let i = 0; i < 8; i++) {
+      const h = 0.8 + i * 0.8;
+      const tier = new THREE.Mesh(new THREE.BoxGeometry(length, h, 1.6), seat[i % 2]);
+      tier.position.set(0, h / 2, -(i * 1.6));
+      tier.receiveShadow = true;
+      g.add(tier);
+    }
+    g.position.set(x, 0, z);
+    g.rotation.y = rotY;
+    group.add(g);
+  };
+  stand(F.length + 24, 0, -(H / 2 + 4), 0);
+  stand(H + 8, -(W / 2 + 6), 0, Math.PI / 2);
+  stand(H + 8, W / 2 + 6, 0, -Math.PI / 2);
   group.add(makeGoal(F, -1), makeGoal(F, 1));
   return group;
 }

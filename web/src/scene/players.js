@@ -14,6 +14,7 @@ import { makeKit, numberTexture, contrastColor } from './kit.js';
 const DEG = Math.PI / 180;
 const AXES = { x: new THREE.Vector3(1, 0, 0), y: new THREE.Vector3(0, 1, 0), z: new THREE.Vector3(0, 0, 1) };
 const _q = new THREE.Quaternion();
+const LABEL_SIZE = 0.016;  // fraction of the view's height
 
 // R_local = R_dofs[0](a0) * R_dofs[1](a1) * ... written into `out`.
 export function localRotation(dofs, angles, first, out) {
@@ -112,8 +113,9 @@ export class Players {
     // A number label above the head, readable from the broadcast camera.
     const label = new THREE.Sprite(new THREE.SpriteMaterial({
       map: numberTexture(unum, (goalie ? kit.goalieColor : kit.shirtColor), 'rgba(0,0,0,0.85)'),
-      depthWrite: false, sizeAttenuation: true }));
-    label.scale.set(0.9, 0.9, 1);
+      depthWrite: false, sizeAttenuation: false }));
+    // Constant size on screen, like a broadcast graphic, at any distance.
+    label.scale.set(LABEL_SIZE, LABEL_SIZE, 1);
     label.renderOrder = 10;
     this.group.add(root, label);
     return { key, side, unum, goalie, root, nodes, label, visible: true, pose: null };
@@ -156,7 +158,7 @@ export class Players {
         const j = skel.joints[i];
         localRotation(j.dofs, p.angles, j.angleIndex, rig.nodes[i].quaternion);
       }
-      rig.label.position.set(p.x, p.z + 1.45, p.y);
+      rig.label.position.set(p.x, p.z + 1.15, p.y);
       if (rig.key === this.hiddenKey) rig.root.visible = false;
     }
     for (const [key, rig] of this.rigs) {

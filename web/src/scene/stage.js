@@ -3,11 +3,12 @@
 // above with -Z up the picture is the monitor's.
 import * as THREE from 'three';
 
-export function createStage(canvas) {
-  const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, powerPreference: 'high-performance' });
+// options: { antialias, shadows } (URL ?aa=0, ?shadows=0 for weak devices).
+export function createStage(canvas, { antialias = true, shadows = true } = {}) {
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias, powerPreference: 'high-performance' });
   const maxRatio = Math.min(window.devicePixelRatio || 1, 2);
   renderer.setPixelRatio(maxRatio);
-  renderer.shadowMap.enabled = true;
+  renderer.shadowMap.enabled = shadows;
   renderer.shadowMap.type = THREE.PCFShadowMap;
   renderer.outputColorSpace = THREE.SRGBColorSpace;
   renderer.toneMapping = THREE.ACESFilmicToneMapping;
