@@ -44,7 +44,7 @@ float envelope(const ActionMotion& m, float tau, float in_s, float out_s) {
   return std::min(smoothstep((tau - m.start_s) / in_s), smoothstep((m.end_s - tau) / out_s));
 }
 
-void kick(const ActionMotion& m, float tau, float heading, ActionSample& s) {
+void kick(const ActionMotion& m, float tau, float heading, float root_x, float root_y, ActionSample& s) {
   s.feet = true;
   s.weight = smoothstep((tau - m.start_s) / 0.1f);
   const int k = m.foot == Foot::Right ? 0 : 1;
@@ -53,6 +53,17 @@ void kick(const ActionMotion& m, float tau, float heading, ActionSample& s) {
   sample_kick_foot(m, tau, along, up, pitch);
   s.foot_x[k] = m.contact_x + m.dir_x * along;
   s.foot_y[k] = m.contact_y + m.dir_y * along;
+  // After the follow-through the foot comes down beside the body, wherever
+  // the 2D player has gone meanwhile.
+  if (tau > m.follow_s) {
+    const float side_k = k == 0 ? 1.0f : -1.0f;
+    const BodyFrame body(root_x, root_y, heading);
+    float lx, ly;
+    body.to_field(0.05f, side_k * 0.12f, lx, ly);
+    const float w = smoothstep((tau - m.follow_s) / std::max(m.end_s - m.follow_s, 0.05f));
+    s.foot_x[k] += (lx - s.foot_x[k]) * w;
+    s.foot_y[k] += (ly - s.foot_y[k]) * w;
+  }
   s.foot_h[k] = std::max(m.contact_h + up, dims::kAnkleHeight);
   s.foot_yaw[k] = m.foot_yaw;
   s.foot_pitch[k] = pitch;
@@ -133,11 +144,11 @@ void dive(const ActionMotion& m, float tau, ActionSample& s) {
 
 }  // namespace
 
-ActionSample sample_action(const ActionMotion& m, float tau, float heading) {
+ActionSample sample_action(const ActionMotion& m, float tau, float heading, float root_x, float root_y) {
   ActionSample s;
   if (tau < m.start_s - 1e-4f || tau > m.end_s + 1e-4f) return s;
   switch (m.kind) {
-    case MotionKind::Kick: kick(m, tau, heading, s); break;
+    case MotionKind::Kick: kick(m, tau, heading, root_x, root_y, s); break;
     case MotionKind::Tackle: tackle(m, tau, s); break;
     case MotionKind::Catch: catch_ball(m, tau, s); break;
     case MotionKind::Dive: dive(m, tau, s); break;

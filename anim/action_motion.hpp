@@ -55,7 +55,8 @@ struct ActionSample {
 };
 
 // Samples `m` at `tau` for a player whose body heading is `heading` (field
-// deg). Returns weight 0 outside [start_s, end_s].
-ActionSample sample_action(const ActionMotion& m, float tau, float heading);
+// deg) and whose 2D root is at (root_x, root_y) (field m; the kicking foot
+// comes down beside it). Returns weight 0 outside [start_s, end_s].
+ActionSample sample_action(const ActionMotion& m, float tau, float heading, float root_x, float root_y);
 
 }  // namespace mc::anim

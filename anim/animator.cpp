@@ -289,10 +289,11 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       // The action playing at this frame, if any.
       ActionSample sample;
       const double now = (static_cast<double>(pos) + 0.5 * sub) * step_s;
+      if (in.reset) ctx.motion_active = false;  // a teleport cancels whatever was playing
       if (ctx.motion_active) {
         const float tau = static_cast<float>(now - ctx.motion.contact_time_s);
         if (tau > ctx.motion.end_s + 1e-4f) ctx.motion_active = false;
-        else if (actions_on && pa.active()) sample = sample_action(ctx.motion, tau, ctx.heading);
+        else if (actions_on && pa.active()) sample = sample_action(ctx.motion, tau, ctx.heading, in.x, in.y);
       }
       if (sample.weight > 0) in.layer = &sample;
       if (ctx.kick_event_pending && ctx.kick_event.seq == f.seq) {

@@ -50,8 +50,14 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   m.contact_y = sy - uy * fx;
   m.contact_h = in.ball_radius - fy;
 
-  // Support foot beside and a little behind the ball, on the other side.
-  body.to_field(bx - 0.12f, bz - side * 0.25f, m.support_x, m.support_y);
+  // Support foot beside and a little behind the ball, on the other side, but
+  // no further than the support hip reaches from the 2D position (the
+  // step-in below only moves the root on the contact frame).
+  float sbx = bx - 0.12f, sbz = bz - side * 0.25f;
+  const float hz = -side * dims::kHipHalfWidth;
+  const float sd = std::hypot(sbx, sbz - hz);
+  if (sd > 0.4f) { sbx *= 0.4f / sd; sbz = hz + (sbz - hz) * 0.4f / sd; }
+  body.to_field(sbx, sbz, m.support_x, m.support_y);
 
   // Step-in: move the root (on the contact frame only) until both hips are
   // within a comfortable horizontal reach of their feet.

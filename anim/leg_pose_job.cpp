@@ -41,7 +41,11 @@ bool LegPoseJob::Run() {
         pelvis_inv * (glm::vec3(f.ankle_ms[0], f.ankle_ms[1], f.ankle_ms[2]) - pelvis_pos) - hip_ls;
     // Knee direction: the sole's yaw relative to the pelvis, within the hip's twist range.
     const float pelvis_yaw = angles[dof::kPelvis];
-    const float twist = clampf(wrap_deg(f.yaw_deg - pelvis_yaw), -40.0f, 40.0f);
+    // (Past a quarter turn the knee direction is ambiguous: the twist fades
+    // to zero at a half turn instead of flipping sides.)
+    const float rel = wrap_deg(f.yaw_deg - pelvis_yaw);
+    const float fade = std::fabs(rel) > 90.0f ? (180.0f - std::fabs(rel)) / 90.0f : 1.0f;
+    const float twist = clampf(rel, -40.0f, 40.0f) * fade;
     TwoBoneIKJob ik;
     ik.upper_length = dims::kThigh;
     ik.lower_length = dims::kShin;
@@ -58,7 +62,9 @@ bool LegPoseJob::Run() {
     const glm::mat3 shin = pelvis * joint_rotation(kZxy, &angles[hip]) * joint_rotation(kZ, &angles[knee]);
     const glm::mat3 local = glm::transpose(shin) * sole_rotation(f.yaw_deg, f.pitch_deg);
     const glm::vec3 fwd = local[0];   // where the sole's +X points, in shin space
-    const float az = std::atan2(fwd.y, fwd.x) / kDeg;
+    // Pitch of the sole's forward axis out of the shin's XZ plane: continuous
+    // even when the hip cannot turn the knee as far as the sole is turned.
+    const float az = std::atan2(fwd.y, std::hypot(fwd.x, fwd.z)) / kDeg;
     const float rz[1] = {-az};
     const glm::vec3 right = joint_rotation(kZ, rz) * local[2];  // sole's +Z after undoing az
     const float ax = std::atan2(-right.y, right.z) / kDeg;

@@ -214,8 +214,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     // Touch-down, unless this foot landed too recently for a human cadence:
     // then it hovers a frame longer just above its spot.
     const int min_frames = static_cast<int>(std::ceil(2.0f / (prm.hard_cadence_cap * dt) - 1e-3f));
-    const FootState& other = s.feet[1 - i];
-    if (f.progress >= 1.0f && f.since_landing < min_frames && other.planted && other.planted_frames < 3) {
+    if (f.progress >= 1.0f && f.since_landing < min_frames) {
       f.progress = 0.97f;
       f.lift = std::max(f.lift, 0.01f);
     }

@@ -3,6 +3,7 @@
 // action motion (kick, tackle, catch, dive; action_motion.hpp) layered over it.
 #pragma once
 
+#include <array>
 #include <span>
 
 #include "anim/action_motion.hpp"
@@ -18,6 +19,9 @@ namespace mc::anim {
 struct PlayerAnim {
   LocomotionState loco;
   float heading = 0;           // heading of the previous frame, field deg (rate-limited)
+  std::array<float, dof::kCount> last_angles{};  // previous frame's output (joint speed limit)
+  bool was_in_action = false;
+  bool last_planted[2] = {false, false};
   // The action playing or about to play (kick_planner.hpp), and its bookkeeping.
   ActionMotion motion;
   bool motion_active = false;
@@ -32,6 +36,9 @@ struct PlayerAnim {
 // Fastest turn of the body between two frames: about a half turn in 0.4 s,
 // what a human manages; the server allows 180 deg per cycle.
 inline constexpr float kMaxTurnPerFrameDeg = 22.5f;
+// Fastest joint rotation between two frames outside actions and teleports
+// (280 deg/s): what the 2D data cannot justify is not shown as a snap.
+inline constexpr float kMaxJointStepDeg = 14.0f;
 
 struct PlayerFrameInput {
   float x = 0, y = 0;          // root, field m (already interpolated)

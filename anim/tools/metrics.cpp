@@ -108,8 +108,10 @@ QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& st
             r.max_head_jump_deg = std::max(r.max_head_jump_deg, raw);
             continue;
           }
-          const double jump = std::fabs(pose.angles[static_cast<std::size_t>(d)] -
-                                        prev->players[p].angles[static_cast<std::size_t>(d)]);
+          const double jump = raw;
+          const int leg = d >= dof::kLHip ? 1 : d >= dof::kRHip ? 0 : -1;
+          const bool stance = leg >= 0 && pi.planted[leg] && prev_info->players[p].planted[leg];
+          if (!stance) r.max_jump_swing_deg = std::max(r.max_jump_swing_deg, jump);
           if (jump > r.max_jump_deg) {
             r.max_jump_deg = jump;
             char buf[160];
@@ -200,13 +202,14 @@ std::string format_report(const QualityReport& r) {
       "cadence                  max %.2f steps/s (%s)  p99 %.2f  mean %.2f (%zu strides)  target <= 4.5   %s\n"
       "joint-limit violations   %ld                              target 0           %s\n"
       "largest joint jump       %.2f deg at %s   target <= 15 deg   %s\n"
+      "  of which outside legs in a continuing stance: %.2f deg (a planted leg sweeps v*dt/leg length)\n"
       "  (neck/head yaw, which follow the server's neck angle exactly: largest jump %.1f deg, not counted)\n",
       r.frames, r.kicks, r.root_error_m.max(), r.root_error_m.mean(), pf(r.root_error_m.max() <= 0.01),
       r.slide_m.mean(), r.slide_m.percentile(95), r.slide_m.max(), r.max_slide_where.c_str(), r.slide_m.values.size(),
       pf(r.slide_m.mean() <= 0.02), r.contact_m.mean(), r.contact_m.percentile(95), r.contact_m.max(),
       pf(r.contact_m.mean() <= 0.05), r.cadence.max(), r.max_cadence_where.c_str(), r.cadence.percentile(99), r.cadence.mean(),
       r.cadence.values.size(), pf(r.cadence.max() <= 4.5), r.limit_violations, pf(r.limit_violations == 0),
-      r.max_jump_deg, r.max_jump_where.c_str(), pf(r.max_jump_deg <= 15.0), r.max_head_jump_deg);
+      r.max_jump_deg, r.max_jump_where.c_str(), pf(r.max_jump_deg <= 15.0), r.max_jump_swing_deg, r.max_head_jump_deg);
   return buf;
 }
 

@@ -150,10 +150,10 @@ int main(int argc, char** argv) {
         const PlayerPose& p = f.players[static_cast<std::size_t>(slot)];
         const PlayerFrameInfo& pi = a.infos[i].players[static_cast<std::size_t>(slot)];
         std::printf("seq %u %-9s act%d rst%d pl%d%d x %.3f y %.3f z %.3f h %.1f st %x | hipR %.1f %.1f %.1f kR %.1f "
-                    "hipL %.1f %.1f %.1f kL %.1f neck %.1f head %.1f\n",
+                    "hipL %.1f %.1f %.1f kL %.1f ankR %.1f %.1f ankL %.1f %.1f\n",
                     f.seq, action_name(pi.action), pi.in_action, pi.reset, pi.planted[0], pi.planted[1], p.x, p.y,
                     p.z, p.heading, p.state, p.angles[24], p.angles[25], p.angles[26], p.angles[27], p.angles[30],
-                    p.angles[31], p.angles[32], p.angles[33], p.angles[6], p.angles[9]);
+                    p.angles[31], p.angles[32], p.angles[33], p.angles[28], p.angles[29], p.angles[34], p.angles[35]);
       }
     }
     if (!pictured) pictured = write_picture(a, png);
