@@ -114,6 +114,39 @@ describe('web page against matchcast-server', { timeout: 240000 }, () => {
     assert.equal(await page.getAttribute('[data-toggle="reach"]', 'class'), 'on');
   });
 
+  test('the replay pauses, seeks back and returns to live', async () => {
+    await drawing();
+    await waitFor(page, async () => {
+      const t = (await stats(page)).timeshift;
+      return t.last - t.first > 200;
+    }, '10 s of kept history', 40000, 500);
+    await page.click('#rp-play');
+    let s = await stats(page);
+    assert.equal(s.timeshift.active, true, 'time-shifted');
+    assert.equal(s.timeshift.paused, true, 'paused');
+    const pausedAt = s.timeshift.pos;
+    await settle();
+    assert.equal((await stats(page)).timeshift.pos, pausedAt, 'the picture stays paused');
+    await page.$eval('#rp-seek', (el) => { el.value = '100'; el.dispatchEvent(new Event('input', { bubbles: true })); });
+    s = await stats(page);
+    const want = s.timeshift.first + 0.1 * (s.timeshift.last - s.timeshift.first);
+    assert.ok(Math.abs(s.timeshift.pos - want) < 25, `seeked to 10 % (${s.timeshift.pos} vs ${want})`);
+    await settle();
+    s = await stats(page);
+    assert.ok(Math.abs(s.seq - s.timeshift.pos) < 2, `the picture shows the seeked moment (${s.seq})`);
+    assert.match(await page.textContent('#rp-behind'), /^-\d+:\d\d$/);
+    await page.screenshot({ path: shot('replay-seeked') });
+    await page.click('#rp-play');
+    await settle();
+    assert.ok((await stats(page)).timeshift.pos > s.timeshift.pos, 'plays on from there');
+    await page.click('#rp-live');
+    s = await stats(page);
+    assert.equal(s.timeshift.active, false, 'back to live');
+    await settle();
+    s = await stats(page);
+    assert.ok(s.timeshift.last - s.seq < 20, `the picture is live again (${s.seq} vs ${s.timeshift.last})`);
+  });
+
   test('bad messages give a visible message and the page resyncs', async () => {
     await page.context().close();  // this test opens its own, routed page
     const ctx = await browser.newContext({ viewport: { width: 1024, height: 640 } });

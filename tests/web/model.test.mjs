@@ -114,3 +114,43 @@ test('the playhead follows a stream that runs faster than real time', () => {
   assert.ok(jb.resyncs <= 1, `no repeated resyncs (${jb.resyncs})`);
   assert.ok(now > 0);
 });
+
+test('time shift: pause, seek back, jump to a goal, catch up with live', async () => {
+  const { TimeShift } = await load('src/net/timeshift.js');
+  // A fake codec: "bytes" are the frames themselves; deltas need their base.
+  const makeCodec = () => {
+    let last = null;
+    return { decode(b) {
+      if (!b.keyframe && (last === null || b.seq !== last + 1)) { last = null; throw new Error('without its base'); }
+      last = b.seq;
+      return b;
+    } };
+  };
+  const ts = new TimeShift({ frameMs: 50 });
+  ts.reset(makeCodec);
+  for (let s = 100; s < 700; s++) {
+    const f = { ...frame(s, { playMode: s >= 400 && s < 420 ? 14 : 3 }), keyframe: s % 20 === 0 };
+    f.byteLength = 100;
+    ts.record(f, f);
+  }
+  assert.deepEqual(ts.goals, [400]);
+  assert.equal(ts.first, 100);
+  assert.ok(ts.enter(690, true));
+  let r = ts.sample(0);
+  assert.equal(r.a.seq, 690, 'paused where it was entered');
+  r = ts.sample(1000);
+  assert.equal(r.a.seq, 690, 'still paused');
+  ts.seek(0.5);
+  r = ts.sample(1000);
+  assert.ok(Math.abs(r.a.seq - 400) <= 1, 'half-way through the history');
+  assert.ok(ts.jumpGoal(-1) === false || ts.pos < 400, 'no goal before');
+  ts.paused = false;
+  ts.seek(0);
+  assert.ok(ts.jumpGoal(1));
+  assert.equal(ts.pos, 300, '5 s before the goal');
+  for (let now = 2000; now <= 2500; now += 100) r = ts.sample(now);
+  assert.ok(Math.abs(r.a.seq - 310) <= 1, `plays on at 1x (${r.a.seq})`);
+  ts.speed = 4;
+  for (let now = 2500; ts.active && now < 60000; now += 16) ts.sample(now);
+  assert.equal(ts.active, false, 'caught up with live');
+});

@@ -51,14 +51,32 @@ export function bindControls(app, canvas) {
     app.selectAt({ x: ((e.clientX - r.left) / r.width) * 2 - 1, y: -((e.clientY - r.top) / r.height) * 2 + 1 });
   });
 
-  // Recording controls: sent as control messages; shown only when offered.
+  // Time shift / replay bar.
   const $ = (id) => document.getElementById(id);
   $('rp-play').addEventListener('click', () => app.replay('toggle'));
   $('rp-prev-goal').addEventListener('click', () => app.replay('prev_goal'));
   $('rp-next-goal').addEventListener('click', () => app.replay('next_goal'));
   $('rp-live').addEventListener('click', () => app.replay('live'));
   $('rp-speed').addEventListener('change', (e) => app.replay('speed', Number(e.target.value)));
-  $('rp-seek').addEventListener('change', (e) => app.replay('seek', Number(e.target.value) / 1000));
+  const seek = $('rp-seek');
+  seek.addEventListener('input', () => app.replay('seek', Number(seek.value) / 1000));
+  seek.addEventListener('pointerdown', () => { seek.dataset.dragging = '1'; });
+  window.addEventListener('pointerup', () => { delete seek.dataset.dragging; });
+}
+
+// Shows the time-shift state: { available, active, paused, fraction, behindMs, speed }.
+export function updateReplayBar(st) {
+  const $ = (id) => document.getElementById(id);
+  $('replay').hidden = !st.available;
+  if (!st.available) return;
+  const seek = $('rp-seek');
+  if (!seek.dataset.dragging) seek.value = String(Math.round(st.fraction * 1000));
+  const s = Math.round(st.behindMs / 1000);
+  $('rp-behind').textContent = st.active ? `-${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}` : 'live';
+  $('rp-play').textContent = st.active && st.paused ? 'Play' : 'Pause';
+  $('rp-live').classList.toggle('live', !st.active);
+  const speed = $('rp-speed');
+  if (document.activeElement !== speed && Number(speed.value) !== st.speed) speed.value = String(st.speed);
 }
 
 export function markCamera(id) {

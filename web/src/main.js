@@ -13,8 +13,9 @@ import { makeKit } from './scene/kit.js';
 import { Cameras } from './cameras.js';
 import { Hud } from './hud.js';
 import { KickSound } from './audio.js';
-import { bindControls, markCamera } from './controls.js';
+import { bindControls, markCamera, updateReplayBar } from './controls.js';
 import { JitterBuffer } from './net/jitter.js';
+import { TimeShift } from './net/timeshift.js';
 import { Stream } from './net/stream.js';
 import { Codec, loadDecoder, readHello } from './net/codec.js';
 import { blendFrames } from './model/interp.js';
@@ -28,6 +29,7 @@ const hud = new Hud();
 const sound = new KickSound();
 const events = new EventDetector();
 const buffer = new JitterBuffer({ delayFrames: Number(params.get('delay') ?? 3) });
+const timeshift = new TimeShift();
 
 let field = normalizeField({});
 let pitch = createPitch(field, stage.renderer);
@@ -118,6 +120,8 @@ function startStream() {
         if (!applyHello(msg)) return;
         try {
           codec = new Codec(mod, msg);
+          timeshift.reset(() => new Codec(mod, msg));
+          timeshift.frameMs = buffer.frameMs;
         } catch (e) {
           codec = null;
           hud.status(`The frame decoder refused the hello: ${e.message}`, true);
@@ -146,6 +150,7 @@ function startStream() {
       if (connection !== 'open') hud.status(null);
       connection = 'open';
       pushFrame(frame);
+      timeshift.record(buf, frame);
     },
     onBadMessage(err) {
       counters.badMessages++;
@@ -156,18 +161,13 @@ function startStream() {
   return stream;
 }
 
-// Control messages other than the hello (SPEC.md): the recording state, if
-// the relay offers recordings. Unknown types are ignored (newer servers).
+// Control messages other than the hello (SPEC.md section 5.2): none is
+// drawn yet; unknown types are ignored (forward compatibility).
 function onControl(msg) {
-  if (msg.type === 'replay' || msg.type === 'recording' || msg.type === 'playback') {
-    const bar = document.getElementById('replay');
-    bar.hidden = false;
-    if (Number.isFinite(msg.position) && Number.isFinite(msg.duration) && msg.duration > 0) {
-      const seek = document.getElementById('rp-seek');
-      if (document.activeElement !== seek) seek.value = String(Math.round(1000 * msg.position / msg.duration));
-    }
-  }
+  counters.controls = (counters.controls ?? 0) + 1;
+  lastControl = msg.type;
 }
+let lastControl = null;
 
 // The decoder module is loaded before the socket opens, so that no frame
 // arrives before there is something to decode it.
@@ -235,12 +235,33 @@ const app = {
     select(keys[(i + dir + keys.length) % keys.length]);
   },
   deselect() { select(null); },
+  // Time shift over what the page has received (net/timeshift.js).
   replay(cmd, arg) {
-    if (document.getElementById('replay').hidden) return;
-    stream?.send({ type: 'replay', command: cmd, value: arg });
+    const here = () => (view ? view.seq : timeshift.last);
+    switch (cmd) {
+      case 'toggle':
+        if (!timeshift.active) timeshift.enter(here(), true);
+        else timeshift.paused = !timeshift.paused;
+        break;
+      case 'seek': timeshift.seek(arg); break;
+      case 'speed':
+        if (!timeshift.active && arg < 1) timeshift.enter(here(), false);
+        timeshift.speed = timeshift.active ? arg : 1;
+        break;
+      case 'prev_goal': timeshift.jumpGoal(-1); break;
+      case 'next_goal': timeshift.jumpGoal(1); break;
+      case 'live': timeshift.live(); break;
+      default: return;
+    }
+    events.reset();   // no kick or goal fires for the jump itself
+    showReplay();
   },
 };
 bindControls(app, canvas);
+function showReplay() {
+  updateReplayBar({ available: timeshift.entries.length > 40, active: timeshift.active, paused: timeshift.paused,
+    fraction: timeshift.fraction(), behindMs: timeshift.behindMs(), speed: timeshift.speed });
+}
 markCamera(cameras.mode);
 hud.showStats(toggles.stats);
 for (const [k, v] of Object.entries(toggles)) document.querySelector(`[data-toggle="${k}"]`)?.classList.toggle('on', v);
@@ -279,10 +300,15 @@ function frameLoop(now) {
   const dt = Math.min(0.1, (now - lastNow) / 1000);
   lastNow = now;
   stage.resize();
-  const s = players ? buffer.sample(now) : null;
+  // Live frames come from the jitter buffer; a time-shifted picture from the
+  // kept history. The buffer is sampled either way so that it stays current.
+  const live = players ? buffer.sample(now) : null;
+  const shifted = timeshift.active;
+  let s = shifted ? timeshift.sample(now) : live;
+  if (shifted && !timeshift.active) { events.reset(); s = live; }   // caught up with live
   if (s) {
     view = blendFrames(s.a, s.b, s.t, view);
-    for (const f of s.passed) onEvents(events.step(f), buffer.playhead);
+    for (const f of s.passed) onEvents(events.step(f), timeshift.active ? timeshift.pos : buffer.playhead);
     players.update(view.players);
     ball.update(view.ball);
     const colors = { 1: players.kits[1].shirtColor, [-1]: players.kits[-1].shirtColor };
@@ -311,6 +337,7 @@ function frameLoop(now) {
     kbps = ((bytes - lastBytes) * 8) / 1000 / ((now - lastStats) / 1000);
     lastBytes = bytes;
     lastStats = now;
+    showReplay();
     hud.stats({ fps: fpsWindow.length, kbps, delayMs: view?.serverTimeMs ? Date.now() - view.serverTimeMs : NaN,
       dropped: buffer.dropped + buffer.late + counters.decodeErrors + counters.skipped });
   }
@@ -326,7 +353,9 @@ window.matchcast = Object.freeze({
     fps: fpsWindow.length, kbps, seq: view?.seq ?? null, time: view?.time ?? null,
     playMode: view?.playMode ?? null, selected, hello: !!match,
     teams: match ? [hud.teams[1].name, hud.teams[-1].name] : null,
-    banner: hud.lastBanner ?? null, sounds: sound.played, renderMs, updateMs, scale: stage.scale,
+    banner: hud.lastBanner ?? null, lastControl,
+    timeshift: { active: timeshift.active, paused: timeshift.paused, pos: timeshift.pos, first: timeshift.first,
+      last: timeshift.last, goals: [...timeshift.goals], bytes: timeshift.bytes, speed: timeshift.speed }, sounds: sound.played, renderMs, updateMs, scale: stage.scale,
   }),
   playerPositions: () => (view ? view.players.map((p) => ({ side: p.side, unum: p.unum, state: p.state,
     x: p.x, y: p.y, z: p.z, heading: p.heading })) : []),
