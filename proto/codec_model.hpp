@@ -37,9 +37,57 @@ struct LastResiduals {
   std::array<std::array<std::int32_t, kMaxDof>, kMaxPlayers> angle{};
 };
 
+// Which predictor serves each kind of value (x, y, z, heading, each dof;
+// shared by all players): a running cost of "hold" (the previous value) and
+// "linear" (constant velocity), each the absolute error (capped at 1023) it
+// would have made, decayed by 1/128 per player value. Legs driven by foot
+// contacts move in jerks that hold predicts better; a turning head or a
+// swinging arm is better extrapolated. Per player and faster decay was
+// tried and is worse (it chases noise). Both sides learn it from decoded
+// values, so it costs no bits.
+struct PredictorCosts {
+  static constexpr int kValues = 4 + kMaxDof;  // x, y, z, heading, then the dofs
+  std::array<std::uint32_t, kValues> hold{}, linear{};
+  bool use_linear(std::size_t, int value) const {
+    return linear[static_cast<std::size_t>(value)] <= hold[static_cast<std::size_t>(value)];
+  }
+  void learn(std::size_t, int value, std::int64_t err_hold, std::int64_t err_linear) {
+    const auto upd = [](std::uint32_t& c, std::int64_t e) {
+      const std::int64_t m = std::min<std::int64_t>(e < 0 ? -e : e, 1023);
+      c = static_cast<std::uint32_t>(c - (c >> 7) + m);
+    };
+    upd(hold[static_cast<std::size_t>(value)], err_hold);
+    upd(linear[static_cast<std::size_t>(value)], err_linear);
+  }
+};
+
+// Residual prediction between dofs of the same player in the same frame:
+// the residual of dof d is predicted as round(coef2[d] / 2 * residual of dof
+// partner[d]), partner[d] < d. Mirrored limbs and chained joints (an arm
+// swings against the other, the head turns with the neck) move together,
+// so one residual says much about another. The encoder picks the table
+// from the statistics of the frames it has seen and sends it in every
+// keyframe; the decoder only follows it.
+inline constexpr std::array<std::int8_t, 8> kPartnerCoef2 = {-4, -3, -2, -1, 1, 2, 3, 4};
+struct PartnerTable {
+  std::array<std::int8_t, kMaxDof> partner;  // -1: none
+  std::array<std::int8_t, kMaxDof> coef2{};  // twice the coefficient
+  PartnerTable() { partner.fill(-1); }
+  // round(c2 * r / 2), halves away from zero.
+  static std::int64_t term(int c2, std::int64_t r) {
+    const std::int64_t t = c2 * r;
+    return t >= 0 ? (t + 1) / 2 : -((-t + 1) / 2);
+  }
+};
+
 struct CodecModel {
   ModelSet key, delta;
+  PartnerTable partners;
+  // The angle residuals of the last delta before partner prediction (what
+  // the encoder's partner statistics learn from).
+  std::array<std::array<std::int32_t, kMaxDof>, kMaxPlayers> raw_angle_residual{};
   LastResiduals last;
+  PredictorCosts costs;
   QuantFrame prev, prev2;  // the frames at t-1 and t-2, as decoded
   int history = 0;         // how many of prev, prev2 are valid (0..2)
 
@@ -47,6 +95,7 @@ struct CodecModel {
     key.reset();
     delta.reset();
     last = LastResiduals{};
+    costs = PredictorCosts{};
     history = 0;
   }
   void push(const QuantFrame& f) {
@@ -58,13 +107,24 @@ struct CodecModel {
   // Linear extrapolation from the two previous frames (constant velocity);
   // right after a keyframe only one frame is known, so hold it. Clamped to
   // the value's range.
-  std::int32_t predict(std::int32_t a1, std::int32_t a0, std::int32_t lo, std::int32_t hi) const {
-    const std::int64_t p = history >= 2 ? 2 * static_cast<std::int64_t>(a1) - a0 : a1;
+  std::int32_t predict(std::int32_t a1, std::int32_t a0, std::int32_t lo, std::int32_t hi, bool linear = true) const {
+    const std::int64_t p = history >= 2 && linear ? 2 * static_cast<std::int64_t>(a1) - a0 : a1;
     return static_cast<std::int32_t>(std::clamp<std::int64_t>(p, lo, hi));
   }
   // Heading lives on a circle of kHeadingSteps: extrapolate the wrapped turn.
-  std::int32_t predict_heading(std::int32_t a1, std::int32_t a0) const {
-    return history >= 2 ? wrap(a1 + wrap_signed(a1 - a0)) : a1;
+  std::int32_t predict_heading(std::int32_t a1, std::int32_t a0, bool linear = true) const {
+    return history >= 2 && linear ? wrap(a1 + wrap_signed(a1 - a0)) : a1;
+  }
+  // After a player value `v` is known: both predictors' errors update its costs.
+  void learn(std::size_t player, int value, std::int32_t v, std::int32_t a1, std::int32_t a0, std::int32_t lo,
+             std::int32_t hi) {
+    if (history < 2) return;
+    costs.learn(player, value, static_cast<std::int64_t>(v) - a1, static_cast<std::int64_t>(v) - predict(a1, a0, lo, hi));
+  }
+  void learn_heading(std::size_t player, std::int32_t v, std::int32_t a1, std::int32_t a0) {
+    if (history < 2) return;
+    costs.learn(player, 3, wrap_signed(static_cast<std::int64_t>(v) - a1),
+                wrap_signed(static_cast<std::int64_t>(v) - predict_heading(a1, a0)));
   }
   static std::int32_t wrap(std::int64_t v) {
     const std::int64_t m = v % kHeadingSteps;
@@ -89,6 +149,25 @@ template <class Io>
 bool walk_keyframe(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q) {
   ModelSet& s = m.key;
   std::int32_t r = 0;
+  // The partner table: per dof a direct bit, then partner (6 bits) and
+  // coefficient index (3 bits).
+  for (int d = 0; d < quant.dof_count(); ++d) {
+    const auto k = static_cast<std::size_t>(d);
+    std::uint32_t has = m.partners.partner[k] >= 0 ? 1u : 0u;
+    io.direct(has, 1);
+    if (!has) {
+      m.partners.partner[k] = -1;
+      continue;
+    }
+    std::uint32_t partner = static_cast<std::uint32_t>(m.partners.partner[k]);
+    std::uint32_t coef = 0;
+    while (coef < 7 && kPartnerCoef2[coef] != m.partners.coef2[k]) ++coef;
+    io.direct(partner, 6);
+    io.direct(coef, 3);
+    if (!io.check(partner < static_cast<std::uint32_t>(d), "partner dof")) return false;
+    m.partners.partner[k] = static_cast<std::int8_t>(partner);
+    m.partners.coef2[k] = kPartnerCoef2[coef];
+  }
   for (int a = 0; a < 3; ++a)
     if (!io.value(a < 2 ? s.ball_xy : s.ball_z, q.ball[a], 0, kPositionMin, kPositionMax, 0, 0, r)) return false;
   for (std::size_t i = 0; i < q.players.size(); ++i) {
@@ -160,16 +239,19 @@ bool walk_delta(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q) {
     for (int c = 0; c < 3; ++c) {
       const auto k = static_cast<std::size_t>(c);
       const int act = activity_class(root_last[k]);
-      if (!io.value(c < 2 ? s.pos_xy : s.pos_z, *root[c], m.predict(root1[c], root0[c], kPositionMin, kPositionMax),
-                    kPositionMin, kPositionMax, zero_ctx(act, prev_nonzero), act, r))
+      const std::int32_t pred = m.predict(root1[c], root0[c], kPositionMin, kPositionMax, m.costs.use_linear(i, c));
+      if (!io.value(c < 2 ? s.pos_xy : s.pos_z, *root[c], pred, kPositionMin, kPositionMax, zero_ctx(act, prev_nonzero),
+                    act, r))
         return false;
+      m.learn(i, c, *root[c], root1[c], root0[c], kPositionMin, kPositionMax);
       root_last[k] = r;
       prev_nonzero = r != 0;
     }
     {
       const int act = activity_class(root_last[3]);
-      if (!io.heading(s.heading, p.heading, m.predict_heading(a1.heading, a0.heading), zero_ctx(act, prev_nonzero), act, r))
-        return false;
+      const std::int32_t pred = m.predict_heading(a1.heading, a0.heading, m.costs.use_linear(i, 3));
+      if (!io.heading(s.heading, p.heading, pred, zero_ctx(act, prev_nonzero), act, r)) return false;
+      m.learn_heading(i, p.heading, a1.heading, a0.heading);
       root_last[3] = r;
     }
 
@@ -179,9 +261,14 @@ bool walk_delta(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q) {
       const auto k = static_cast<std::size_t>(d);
       const std::int32_t hi = quant.grid(d).steps - 1;
       const int act = activity_class(angle_last[k]);
-      if (!io.value(s.angle[k], p.angles[k], m.predict(a1.angles[k], a0.angles[k], 0, hi), 0, hi,
-                    zero_ctx(act, prev_nonzero), act, r))
+      const std::int32_t pred = m.predict(a1.angles[k], a0.angles[k], 0, hi, m.costs.use_linear(i, 4 + d));
+      const int partner = m.partners.partner[k];
+      const std::int64_t adj =
+          partner >= 0 ? PartnerTable::term(m.partners.coef2[k], m.raw_angle_residual[i][static_cast<std::size_t>(partner)]) : 0;
+      if (!io.value(s.angle[k], p.angles[k], static_cast<std::int32_t>(pred + adj), 0, hi, zero_ctx(act, prev_nonzero), act, r))
         return false;
+      m.raw_angle_residual[i][k] = p.angles[k] - pred;
+      m.learn(i, 4 + d, p.angles[k], a1.angles[k], a0.angles[k], 0, hi);
       angle_last[k] = r;
       prev_nonzero = r != 0;
     }

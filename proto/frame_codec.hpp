@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "proto/codec_model.hpp"
 #include "proto/frame_header.hpp"
@@ -41,9 +42,16 @@ class FrameEncoder {
   const Quantizer& quantizer() const { return quant_; }
 
  private:
+  void learn_partners();
+  void choose_partners();
+
   Quantizer quant_;
   EncoderOptions options_;
   detail::CodecModel model_;
+  // Estimated bits of each dof's residuals with each (partner, coefficient),
+  // [dof][partner][coef], and without a partner: for choose_partners().
+  std::vector<std::uint32_t> partner_cost_;
+  std::vector<std::uint64_t> base_cost_;
   bool started_ = false;
   bool force_key_ = false;
   int since_key_ = 0;

@@ -36,6 +36,7 @@ struct DecodeIo {
     b = dec.decode_bit(p);
     return true;
   }
+  bool check(bool ok, const char* what) { return ok || corrupt(what); }
   void direct(std::uint32_t& v, int bits) { v = dec.decode_direct(bits); }
   void varbits(std::uint32_t& v) {
     const std::uint32_t len = dec.decode_direct(5);

@@ -25,6 +25,7 @@ struct EncodeIo {
     enc.encode_bit(p, b);
     return true;
   }
+  bool check(bool, const char*) { return true; }
   void direct(std::uint32_t& v, int bits) { enc.encode_direct(v, bits); }
   // 5 bits of bit length L, then the L-1 bits below the leading one.
   void varbits(std::uint32_t& v) {
@@ -35,10 +36,68 @@ struct EncodeIo {
   }
 };
 
+// Approximate bits of a residual under the signed-value code: enough to
+// rank partner choices.
+std::uint32_t cost_bits(std::int64_t r) {
+  if (r == 0) return 1;
+  std::uint64_t m = static_cast<std::uint64_t>(r < 0 ? -r : r);
+  std::uint32_t b = 0;
+  while (m > 1) m >>= 1, ++b;
+  return 3 + 2 * b;
+}
+
 }  // namespace
 
+void FrameEncoder::learn_partners() {
+  const int dofs = quant_.dof_count();
+  const auto n = static_cast<std::size_t>(kMaxDof);
+  for (std::size_t i = 0; i < kMaxPlayers; ++i) {
+    const auto& r = model_.raw_angle_residual[i];
+    for (int d = 0; d < dofs; ++d) {
+      const std::int64_t rd = r[static_cast<std::size_t>(d)];
+      base_cost_[static_cast<std::size_t>(d)] += cost_bits(rd);
+      for (int p = 0; p < d; ++p) {
+        const std::int64_t rp = r[static_cast<std::size_t>(p)];
+        std::uint32_t* c = &partner_cost_[(static_cast<std::size_t>(d) * n + static_cast<std::size_t>(p)) * 8];
+        if (rp == 0) {  // every coefficient predicts 0
+          const std::uint32_t b = cost_bits(rd);
+          for (int k = 0; k < 8; ++k) c[k] += b;
+          continue;
+        }
+        for (std::size_t k = 0; k < 8; ++k) c[k] += cost_bits(rd - detail::PartnerTable::term(detail::kPartnerCoef2[k], rp));
+      }
+    }
+  }
+}
+
+void FrameEncoder::choose_partners() {
+  const int dofs = quant_.dof_count();
+  const auto n = static_cast<std::size_t>(kMaxDof);
+  detail::PartnerTable t;
+  for (int d = 0; d < dofs; ++d) {
+    const auto dd = static_cast<std::size_t>(d);
+    // A partner must save 5% of the dof's bits: the table costs 9 bits per
+    // entry per keyframe, and a marginal gain is noise.
+    std::uint64_t best = base_cost_[dd] - base_cost_[dd] / 20;
+    for (int p = 0; p < d; ++p)
+      for (std::size_t k = 0; k < 8; ++k) {
+        const std::uint32_t c = partner_cost_[(dd * n + static_cast<std::size_t>(p)) * 8 + k];
+        if (c < best) {
+          best = c;
+          t.partner[dd] = static_cast<std::int8_t>(p);
+          t.coef2[dd] = detail::kPartnerCoef2[k];
+        }
+      }
+  }
+  model_.partners = t;
+  // Older statistics fade: half weight per keyframe interval.
+  for (auto& c : partner_cost_) c >>= 1;
+  for (auto& c : base_cost_) c >>= 1;
+}
+
 FrameEncoder::FrameEncoder(const SkeletonDef& skeleton, EncoderOptions options)
-    : quant_(skeleton), options_(options) {
+    : quant_(skeleton), options_(options),
+      partner_cost_(static_cast<std::size_t>(kMaxDof) * kMaxDof * 8, 0), base_cost_(kMaxDof, 0) {
   if (options_.keyframe_interval < 1) options_.keyframe_interval = 1;
 }
 
@@ -64,12 +123,14 @@ std::string FrameEncoder::encode(const PoseFrame& frame, bool& is_keyframe) {
   EncodeIo io;
   if (is_keyframe) {
     model_.reset_for_keyframe();
+    choose_partners();
     std::uint32_t fp = quant_.fingerprint();
     io.direct(fp, 32);
     detail::walk_keyframe(io, model_, quant_, q);
     since_key_ = 1;
   } else {
     detail::walk_delta(io, model_, quant_, q);
+    if (since_key_ % 2 == 1) learn_partners();  // every other delta: half the cost, as good a sample
     ++since_key_;
   }
   model_.push(q);

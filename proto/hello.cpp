@@ -89,7 +89,7 @@ json hello_to_json_value(const Hello& h) {
           {"match_id", h.match_id},
           {"frame_rate", h.frame_rate},
           {"keyframe_interval", h.keyframe_interval},
-          {"quantization", {{"angle_step_deg", kAngleStepDeg}, {"position_step_m", kPositionStepM}}},
+          {"quantization", {{"angle_step_deg", kAngleStepDeg}, {"heading_steps", kHeadingSteps}, {"position_step_m", kPositionStepM}}},
           {"skeleton", skeleton_to_json(h.skeleton)},
           {"field",
            {{"length", f.length}, {"width", f.width}, {"goal_width", f.goal_width}, {"goal_depth", f.goal_depth},

@@ -57,7 +57,7 @@ std::int32_t Quantizer::position_q(float metres) {
 
 std::int32_t Quantizer::heading_q(float degrees) {
   if (!std::isfinite(degrees)) return 0;
-  const double steps = std::round(static_cast<double>(degrees) / kAngleStepDeg);
+  const double steps = std::round(static_cast<double>(degrees) / kHeadingStepDeg);
   double m = std::fmod(steps, kHeadingSteps);
   if (m < 0) m += kHeadingSteps;
   return static_cast<std::int32_t>(m) % kHeadingSteps;
@@ -65,7 +65,7 @@ std::int32_t Quantizer::heading_q(float degrees) {
 
 float Quantizer::heading_value(std::int32_t q) {
   // (-180, 180], matching PlayerState::body's convention.
-  double deg = q * kAngleStepDeg;
+  double deg = q * kHeadingStepDeg;
   if (deg > 180.0) deg -= 360.0;
   return static_cast<float>(deg);
 }

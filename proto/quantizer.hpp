@@ -2,12 +2,13 @@
 // of issue 5 (largest joint-angle error 0.5 deg, largest position error 1 cm).
 // SPEC.md section "Quantization" has the arithmetic; in short:
 //   - rounding to a grid of step s makes the largest error s/2;
-//   - angles (joint angles and heading): s = 0.9 deg -> error <= 0.45 deg,
-//     0.05 deg of margin below the 0.5 deg budget for float rounding;
+//   - joint angles: s = 0.99 deg -> error <= 0.495 deg, 0.005 deg of margin
+//     below the 0.5 deg budget for float rounding (a float near 180 deg is
+//     exact to 1e-5 deg); heading: 364 steps on the circle, s = 0.989 deg;
 //   - positions: s = 1 cm per axis -> 0.5 cm per axis, and the 3D error is at
 //     most sqrt(3) * 0.5 = 0.87 cm <= 1 cm.
 // Each joint dof is coded as an index into its [min, max] limit range, so
-// the keyframe spends exactly ceil(log2(range / 0.9 + 1)) bits on it.
+// an unpredicted value carries at most log2(range / 0.99 + 1) bits.
 #pragma once
 
 #include <array>
@@ -19,14 +20,15 @@
 
 namespace mc::proto {
 
-inline constexpr int kAngleStepMilliDeg = 900;     // 0.9 deg
+inline constexpr int kAngleStepMilliDeg = 990;     // 0.99 deg
 inline constexpr double kAngleStepDeg = kAngleStepMilliDeg / 1000.0;
 inline constexpr double kPositionStepM = 0.01;     // 1 cm
-inline constexpr int kHeadingSteps = 400;          // 360 / 0.9
+inline constexpr int kHeadingSteps = 364;          // 360 / 364 = 0.989 deg per step
+inline constexpr double kHeadingStepDeg = 360.0 / kHeadingSteps;
 inline constexpr int kPositionBits = 16;           // +-327.68 m in cm, two's complement
 inline constexpr std::int32_t kPositionMin = -32768, kPositionMax = 32767;
 
-// One dof's grid: value(q) = lo_mdeg / 1000 + q * 0.9 deg, clamped to the
+// One dof's grid: value(q) = lo_mdeg / 1000 + q * 0.99 deg, clamped to the
 // upper limit, for q in [0, steps - 1].
 struct DofGrid {
   std::int32_t lo_mdeg = 0;   // lower limit, millidegrees (rounded)
@@ -41,7 +43,7 @@ struct QuantPlayer {
   std::uint8_t unum = 0;      // 0..15
   std::uint32_t state = 0;
   std::int32_t x = 0, y = 0, z = 0;  // cm
-  std::int32_t heading = 0;   // [0, 400) steps of 0.9 deg from +x
+  std::int32_t heading = 0;   // [0, 364) steps of 360/364 deg from +x
   std::array<std::int32_t, kMaxDof> angles{};  // grid indices
 };
 struct QuantFrame {

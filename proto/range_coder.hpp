@@ -19,7 +19,7 @@ namespace mc::proto {
 using Prob = std::uint16_t;
 inline constexpr int kProbBits = 11;
 inline constexpr Prob kProbInit = 1u << (kProbBits - 1);
-inline constexpr int kProbShift = 5;  // adaptation speed: ~32 symbols of memory
+inline constexpr int kProbShift = 4;  // adaptation speed: ~32 symbols of memory
 
 class RangeEncoder {
  public:

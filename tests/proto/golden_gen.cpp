@@ -22,9 +22,11 @@ using namespace mc::proto;
 
 namespace {
 
-// Decoded values are multiples of 0.001 deg / 0.01 m: three decimals are exact
+// Decoded angles and positions are multiples of 0.001 deg / 0.01 m: three decimals are exact
 // (tests compare with a 1e-4 tolerance) and keep the file small.
 double r3(float v) { return std::round(static_cast<double>(v) * 1000.0) / 1000.0; }
+// Headings are multiples of 360/364 deg: six decimals.
+double r6(float v) { return std::round(static_cast<double>(v) * 1e6) / 1e6; }
 
 std::string hex(const std::string& bytes) {
   static const char* digits = "0123456789abcdef";
@@ -39,7 +41,7 @@ json expected(const PoseFrame& f, bool key, int dofs) {
     json angles = json::array();
     for (int d = 0; d < dofs; ++d) angles.push_back(r3(p.angles[static_cast<std::size_t>(d)]));
     players.push_back({{"side", static_cast<int>(p.side)}, {"unum", p.unum}, {"state", p.state}, {"x", r3(p.x)},
-                       {"y", r3(p.y)}, {"z", r3(p.z)}, {"heading", r3(p.heading)}, {"angles", angles}});
+                       {"y", r3(p.y)}, {"z", r3(p.z)}, {"heading", r6(p.heading)}, {"angles", angles}});
   }
   return {{"seq", f.seq}, {"time", f.time}, {"stoppage", f.stoppage}, {"substep", f.substep},
           {"serverTimeMs", f.server_time_ms}, {"keyframe", key}, {"playMode", static_cast<int>(f.play_mode)},

@@ -4,6 +4,9 @@
 // frame, beside the same frames as JSON and as raw float32.
 //
 //   proto_pose_stream_bench [--log PATH] [--states N] [--keyframe-interval F] [--synth]
+//                           [--save-frames PATH | --load-frames PATH]
+// --save/--load-frames keep the animated frames (and skeleton) in a file, so
+// that codec variants are compared on identical input while anim changes.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,7 +17,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
+#include <random>
+
 #include "proto/frame_codec.hpp"
+#include "proto/hello.hpp"
+#include "server/record/recording_reader.hpp"
+#include "server/record/recording_writer.hpp"
 #include "tests/proto/support/real_game.hpp"
 
 using namespace mc;
@@ -49,12 +59,15 @@ int main(int argc, char** argv) {
   std::size_t max_states = 0;
   EncoderOptions options;
   bool synth = false;
+  std::string save_frames, load_frames;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--log" && i + 1 < argc) log = argv[++i];
     else if (a == "--states" && i + 1 < argc) max_states = std::stoul(argv[++i]);
     else if (a == "--keyframe-interval" && i + 1 < argc) options.keyframe_interval = std::stoi(argv[++i]);
     else if (a == "--synth") synth = true;
+    else if (a == "--save-frames" && i + 1 < argc) save_frames = argv[++i];
+    else if (a == "--load-frames" && i + 1 < argc) load_frames = argv[++i];
     else {
       std::fprintf(stderr, "usage: %s [--log PATH] [--states N] [--keyframe-interval F] [--synth]\n", argv[0]);
       return 2;
@@ -63,9 +76,35 @@ int main(int argc, char** argv) {
   testing::RealGame game;
   std::string error;
   const auto t_load = Clock::now();
-  if (!testing::load_real_game(log, !synth, max_states, game, error)) {
+  if (!load_frames.empty()) {
+    std::FILE* in = std::fopen(load_frames.c_str(), "rb");
+    std::uint64_t n = 0, len = 0;
+    if (!in || std::fread(&len, 8, 1, in) != 1) return 1;
+    std::string hello_text(len, '\0');
+    if (std::fread(hello_text.data(), 1, len, in) != len || std::fread(&n, 8, 1, in) != 1) return 1;
+    Hello h;
+    if (!hello_from_json(hello_text, h, error)) return 1;
+    game.skeleton = h.skeleton;
+    game.animated_by = "frames from " + load_frames;
+    game.frames.resize(n);
+    if (std::fread(game.frames.data(), sizeof(PoseFrame), n, in) != n) return 1;
+    std::fclose(in);
+  } else if (!testing::load_real_game(log, !synth, max_states, game, error)) {
     std::fprintf(stderr, "cannot load %s: %s\n", log.c_str(), error.c_str());
     return 1;
+  }
+  if (!save_frames.empty()) {
+    Hello h;
+    h.skeleton = game.skeleton;
+    const std::string hello_text = to_json(h);
+    const std::uint64_t len = hello_text.size(), n = game.frames.size();
+    std::FILE* out = std::fopen(save_frames.c_str(), "wb");
+    if (!out) return 1;
+    std::fwrite(&len, 8, 1, out);
+    std::fwrite(hello_text.data(), 1, len, out);
+    std::fwrite(&n, 8, 1, out);
+    std::fwrite(game.frames.data(), sizeof(PoseFrame), n, out);
+    std::fclose(out);
   }
   const double load_s = std::chrono::duration<double>(Clock::now() - t_load).count();
   const int dofs = game.skeleton.dof_count();
@@ -142,7 +181,56 @@ int main(int argc, char** argv) {
   std::printf("largest heading error:     %.3f deg (budget 0.5)\n", max_heading);
   std::printf("largest position error:    %.2f cm (3D distance, budget 1)\n", max_pos * 100);
   std::printf("encode: %.1f us/frame   decode: %.1f us/frame\n", enc_s * 1e6 / n, dec_s * 1e6 / n);
+
+  // The recording of the same frames, written to a temporary file, and
+  // seeks to random simulation times through the reader.
+  Hello hello;
+  hello.skeleton = game.skeleton;
+  hello.keyframe_interval = options.keyframe_interval;
+  hello.left.name = game.left_name;
+  hello.right.name = game.right_name;
+  const std::string path = "/tmp/matchcast-bench-" + std::to_string(::getpid()) + ".mcrec";
+  {
+    record::RecordingWriter w;
+    if (!w.open(path, to_json(hello), error, {static_cast<std::uint32_t>(options.keyframe_interval), false})) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return 1;
+    }
+    for (const auto& e : encoded) w.add_frame(e, error);
+    w.close(error);
+  }
+  record::RecordingReader reader;
+  if (!reader.open(path, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return 1;
+  }
+  std::FILE* fp = std::fopen(path.c_str(), "rb");
+  std::fseek(fp, 0, SEEK_END);
+  const long rec_size = std::ftell(fp);
+  std::fclose(fp);
+  std::mt19937 rng(1);
+  const int last_time = frames.back().time;
+  double seek_max = 0, seek_sum = 0;
+  const int seeks = 200;
+  for (int i = 0; i < seeks; ++i) {
+    const int t = static_cast<int>(rng() % static_cast<unsigned>(last_time));
+    PoseFrame f;
+    const auto s0 = Clock::now();
+    if (!reader.seek(t, f, error)) {
+      std::fprintf(stderr, "seek %d failed: %s\n", t, error.c_str());
+      return 1;
+    }
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
+    seek_max = std::max(seek_max, ms);
+    seek_sum += ms;
+  }
+  std::remove(path.c_str());
+  std::printf("recording: %.2f MB for the full game (target 3 MB), %zu chunks\n", rec_size / 1e6, reader.chunks().size());
+  std::printf("seek to a random time: mean %.2f ms, max %.2f ms over %d seeks (target 10 ms)\n", seek_sum / seeks,
+              seek_max, seeks);
+
   const bool ok = mean <= 300 && max_angle <= 0.5 && max_heading <= 0.5 && max_pos <= 0.01;
-  std::printf("\ntargets (mean <= 300 B, angle <= 0.5 deg, position <= 1 cm): %s\n", ok ? "MET" : "NOT MET");
+  std::printf("\nstream targets (mean <= 300 B, angle <= 0.5 deg, position <= 1 cm): %s\n", ok ? "MET" : "NOT MET");
+  std::printf("recording targets (<= 3 MB, seek <= 10 ms): %s\n", rec_size <= 3000000 && seek_max <= 10 ? "MET" : "NOT MET");
   return 0;
 }

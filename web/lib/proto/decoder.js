@@ -11,9 +11,9 @@ export const PROTOCOL_MAJOR = 1;
 export const PROTOCOL_MINOR = 0;
 export const FRAME_MAGIC = 0x4d;
 export const HEADER_SIZE = 26;
-export const ANGLE_STEP_MDEG = 900;
+export const ANGLE_STEP_MDEG = 990;
 export const POSITION_STEP_M = 0.01;
-export const HEADING_STEPS = 400;
+export const HEADING_STEPS = 364;
 export const MAX_PLAYERS = 22;
 export const MAX_DOF = 64;
 
@@ -164,6 +164,33 @@ function newModelSet(dofs) {
   };
 }
 
+const PARTNER_COEF2 = [-4, -3, -2, -1, 1, 2, 3, 4];
+
+// round(c2 * r / 2), halves away from zero (proto/codec_model.hpp PartnerTable::term).
+function partnerTerm(c2, r) {
+  const t = c2 * r;
+  return t >= 0 ? Math.floor((t + 1) / 2) : -Math.floor((-t + 1) / 2);
+}
+
+// Hold-vs-linear running costs per kind of value (proto/codec_model.hpp PredictorCosts).
+class PredictorCosts {
+  constructor(dofs) {
+    this.hold = new Uint32Array(4 + dofs);
+    this.linear = new Uint32Array(4 + dofs);
+  }
+  useLinear(value) {
+    return this.linear[value] <= this.hold[value];
+  }
+  learn(value, errHold, errLinear) {
+    const upd = (arr, e) => {
+      const c = arr[value];
+      arr[value] = c - (c >>> 7) + Math.min(Math.abs(e), 1023);
+    };
+    upd(this.hold, errHold);
+    upd(this.linear, errLinear);
+  }
+}
+
 // The last residual of each value per player (proto/codec_model.hpp LastResiduals).
 function newLastResiduals(dofs) {
   const root = [];
@@ -216,6 +243,11 @@ export class FrameDecoder {
         this.key = newModelSet(this.dofCount);
         this.delta = newModelSet(this.dofCount);
         this.last = newLastResiduals(this.dofCount);
+        this.costs = new PredictorCosts(this.dofCount);
+        this.partner = new Int8Array(this.dofCount).fill(-1);
+        this.coef2 = new Int8Array(this.dofCount);
+        this.rawResidual = [];
+        for (let i = 0; i < MAX_PLAYERS; i++) this.rawResidual.push(new Int32Array(this.dofCount));
         this.history = 0;
         const fp = rc.direct(32);
         if (!rc.overrun && fp !== this.fingerprint) {
@@ -241,11 +273,19 @@ export class FrameDecoder {
     }
   }
 
-  #predict(a1, a0, lo, hi) {
-    return clamp(this.history >= 2 ? 2 * a1 - a0 : a1, lo, hi);
+  #predict(a1, a0, lo, hi, linear = true) {
+    return clamp(this.history >= 2 && linear ? 2 * a1 - a0 : a1, lo, hi);
   }
-  #predictHeading(a1, a0) {
-    return this.history >= 2 ? wrapHeading(a1 + wrapSigned(a1 - a0)) : a1;
+  #predictHeading(a1, a0, linear = true) {
+    return this.history >= 2 && linear ? wrapHeading(a1 + wrapSigned(a1 - a0)) : a1;
+  }
+  #learn(value, v, a1, a0, lo, hi) {
+    if (this.history < 2) return;
+    this.costs.learn(value, v - a1, v - this.#predict(a1, a0, lo, hi));
+  }
+  #learnHeading(v, a1, a0) {
+    if (this.history < 2) return;
+    this.costs.learn(3, wrapSigned(v - a1), wrapSigned(v - this.#predictHeading(a1, a0)));
   }
 
   // Prediction + decoded residual, range-checked; returns [value, residual].
@@ -269,6 +309,15 @@ export class FrameDecoder {
   #readKeyframe(rc) {
     const s = this.key;
     const q = emptyQuant(this.dofCount);
+    // The partner table: per dof a direct bit, then partner (6) and coefficient index (3).
+    for (let d = 0; d < this.dofCount; d++) {
+      if (rc.direct(1) === 0) continue;
+      const partner = rc.direct(6);
+      const coef = rc.direct(3);
+      if (partner >= d) throw new Error(rc.overrun ? 'pose frame truncated' : 'corrupt pose frame: partner dof out of range');
+      this.partner[d] = partner;
+      this.coef2[d] = PARTNER_COEF2[coef];
+    }
     for (let a = 0; a < 3; a++) [q.ball[a]] = this.#value(rc, a < 2 ? s.ballXY : s.ballZ, 0, POS_MIN, POS_MAX, 0, 0);
     for (let i = 0; i < MAX_PLAYERS; i++) {
       const p = q.players[i];
@@ -325,25 +374,32 @@ export class FrameDecoder {
       prevNonzero = false;
       for (const [c, k] of [[0, 'x'], [1, 'y'], [2, 'z']]) {
         const act = activityClass(rootLast[c]);
-        const pred = this.#predict(a1[k], a0[k], POS_MIN, POS_MAX);
+        const pred = this.#predict(a1[k], a0[k], POS_MIN, POS_MAX, this.costs.useLinear(c));
         const [v, r] = this.#value(rc, c < 2 ? s.posXY : s.posZ, pred, POS_MIN, POS_MAX, zeroCtx(act, prevNonzero), act);
         p[k] = v;
+        this.#learn(c, v, a1[k], a0[k], POS_MIN, POS_MAX);
         rootLast[c] = r;
         prevNonzero = r !== 0;
       }
       const hAct = activityClass(rootLast[3]);
-      const [hv, hr] = this.#heading(rc, s.heading, this.#predictHeading(a1.heading, a0.heading),
+      const [hv, hr] = this.#heading(rc, s.heading, this.#predictHeading(a1.heading, a0.heading, this.costs.useLinear(3)),
         zeroCtx(hAct, prevNonzero), hAct);
       p.heading = hv;
+      this.#learnHeading(hv, a1.heading, a0.heading);
       rootLast[3] = hr;
       const angleLast = last.angle[i];
+      const raw = this.rawResidual[i];
       prevNonzero = false;
       for (let d = 0; d < this.dofCount; d++) {
         const hi = this.grids[d].steps - 1;
         const act = activityClass(angleLast[d]);
-        const pred = this.#predict(a1.angles[d], a0.angles[d], 0, hi);
-        const [v, r] = this.#value(rc, s.angle[d], pred, 0, hi, zeroCtx(act, prevNonzero), act);
+        const pred = this.#predict(a1.angles[d], a0.angles[d], 0, hi, this.costs.useLinear(4 + d));
+        const partner = this.partner[d];
+        const adj = partner >= 0 ? partnerTerm(this.coef2[d], raw[partner]) : 0;
+        const [v, r] = this.#value(rc, s.angle[d], pred + adj, 0, hi, zeroCtx(act, prevNonzero), act);
         p.angles[d] = v;
+        raw[d] = v - pred;
+        this.#learn(4 + d, v, a1.angles[d], a0.angles[d], 0, hi);
         angleLast[d] = r;
         prevNonzero = r !== 0;
       }
@@ -358,7 +414,7 @@ export class FrameDecoder {
         const g = this.grids[d];
         angles[d] = Math.min(g.loM + p.angles[d] * ANGLE_STEP_MDEG, g.hiM) / 1000;
       }
-      let heading = (p.heading * ANGLE_STEP_MDEG) / 1000;
+      let heading = (p.heading * 360) / HEADING_STEPS;
       if (heading > 180) heading -= 360;
       return {
         side: p.side === 1 ? 1 : p.side === 2 ? -1 : 0, // mc::Side: 1 left, -1 right, 0 neutral

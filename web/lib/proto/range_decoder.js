@@ -6,7 +6,7 @@
 
 const PROB_BITS = 11;
 export const PROB_INIT = 1 << (PROB_BITS - 1);
-const PROB_SHIFT = 5;
+const PROB_SHIFT = 4;
 const TOP = 2 ** 24;
 const ACTIVITY_CLASSES = 4;
 const ZERO_CONTEXTS = 8;
