@@ -57,6 +57,10 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   const float hz = -side * dims::kHipHalfWidth;
   const float sd = std::hypot(sbx, sbz - hz);
   if (sd > 0.4f) { sbx *= 0.4f / sd; sbz = hz + (sbz - hz) * 0.4f / sd; }
+  // Pulled in, it must still stay on its own side of the kicking foot.
+  float cbx, cbz;
+  body.to_body(m.contact_x, m.contact_y, cbx, cbz);
+  if (side * (cbz - sbz) < 0.12f) sbz = cbz - side * 0.12f;
   body.to_field(sbx, sbz, m.support_x, m.support_y);
 
   // Step-in: move the root (on the contact frame only) until both hips are

@@ -113,7 +113,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
   // The posture index follows the distance; a touch-down off its keyframe
   // pulls it back into step gradually (a few frames), so that the rhythmic
   // channels stay continuous.
-  const float corr = clampf(0.25f * s.phase_error, -0.03f, 0.03f);
+  const float corr = dphase > 0 ? clampf(0.25f * s.phase_error, -0.03f, 0.03f) : 0.0f;
   s.phase_error -= corr;
   s.posture_m = advance_posture(s.posture_m, (dphase - corr) * kReferenceCycleM, kReferenceCycleM);
 

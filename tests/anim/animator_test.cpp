@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/local_to_model_job.hpp"
 #include "synthetic_game.hpp"
 
 namespace mc::anim {
@@ -111,6 +113,111 @@ TEST(Animator, LegsSwingWhenRunningAndRestWhenStanding) {
   EXPECT_GT(hi - lo, 30.0f);
   // A standing player (left 2) keeps still.
   EXPECT_NEAR(out[50].players[1].angles[dof::kRHip], out[90].players[1].angles[dof::kRHip], 1e-4f);
+}
+
+// A walk up to the ball and a kick at cycle `k` (and `k2` if given) by left 1.
+std::vector<WorldState> kick_game(int k, int k2 = -1) {
+  auto g = run_game(40, 0.2, 0);
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const double px = g[i].players[0].x;
+    g[i].ball.x = static_cast<int>(i) < k ? g[static_cast<std::size_t>(k - 1)].players[0].x + 0.6 : 0;
+    g[i].ball.y = 0.15;
+    if (static_cast<int>(i) >= k) g[i].ball.x = g[static_cast<std::size_t>(k - 1)].players[0].x + 0.6 + 2.0 * (static_cast<int>(i) - k + 1);
+    (void)px;
+  }
+  g[static_cast<std::size_t>(k)].players[0].state |= state_bits::kKick;
+  if (k2 >= 0) g[static_cast<std::size_t>(k2)].players[0].state |= state_bits::kKick;
+  return g;
+}
+
+glm::vec3 strike_point(const PlayerPose& p, int foot_joint) {
+  const SkeletonDef& s = human_skeleton();
+  std::vector<glm::mat4> m(s.joints.size());
+  LocalToModelJob fk{&s, std::span<const float>(p.angles.data(), p.angles.size()), glm::vec3(0, p.z, 0), m};
+  fk.Run();
+  const glm::vec3 b(m[static_cast<std::size_t>(foot_joint)] * glm::vec4(0.19f, -0.04f, 0, 1));
+  const BodyFrame body(p.x, p.y, p.heading);
+  float fx, fy;
+  body.to_field(b.x, b.z, fx, fy);
+  return {fx, fy, b.y};
+}
+
+TEST(Animator, KickContactFallsBetweenCyclesWithTheFootOnTheBall) {
+  const int k = 20;
+  const auto game = kick_game(k);
+  std::vector<AnimEvent> events;
+  const auto out = animate(game, {}, &events);
+  const AnimEvent* kick = nullptr;
+  for (const AnimEvent& e : events)
+    if (e.type == AnimEventType::Kick) kick = &e;
+  ASSERT_NE(kick, nullptr);
+  EXPECT_EQ(kick->seq, static_cast<std::uint32_t>(2 * (k - 1) + 1));  // half-way into cycle k-1
+  EXPECT_EQ(kick->contact_time_ms, kick->seq * 50u);
+  EXPECT_EQ(kick->side, Side::Left);
+  EXPECT_EQ(kick->unum, 1);
+  const PoseFrame& f = out[kick->seq];
+  // The ball still waits where it was kicked from...
+  EXPECT_NEAR(f.ball.x, game[static_cast<std::size_t>(k - 1)].ball.x, 1e-5);
+  // ...and the front of the kicking foot touches it.
+  const glm::vec3 s = strike_point(f.players[0], kick->foot == Foot::Right ? kRFoot : kLFoot);
+  const float d = std::sqrt((s.x - f.ball.x) * (s.x - f.ball.x) + (s.y - f.ball.y) * (s.y - f.ball.y) +
+                            (s.z - f.ball.z) * (s.z - f.ball.z));
+  EXPECT_NEAR(d, 0.085f, 0.05f);
+  // The root is still exact at the cycles around the contact.
+  EXPECT_NEAR(out[kick->seq - 1].players[0].x, game[static_cast<std::size_t>(k - 1)].players[0].x, 1e-4);
+  EXPECT_NEAR(out[kick->seq + 1].players[0].x, game[static_cast<std::size_t>(k)].players[0].x, 1e-4);
+}
+
+TEST(Animator, KicksInConsecutiveCyclesAreOneKick) {
+  std::vector<AnimEvent> events;
+  animate(kick_game(20, 21), {}, &events);
+  int kicks = 0;
+  for (const AnimEvent& e : events) kicks += e.type == AnimEventType::Kick;
+  EXPECT_EQ(kicks, 1);
+  events.clear();
+  animate(kick_game(20, 26), {}, &events);
+  kicks = 0;
+  for (const AnimEvent& e : events) kicks += e.type == AnimEventType::Kick;
+  EXPECT_EQ(kicks, 2);
+}
+
+TEST(Animator, DetailLevelsSwitchRunningAndKicking) {
+  AnimConfig none;
+  none.detail = DetailLevel::None;
+  const auto still = animate(run_game(60, 0.7), none);
+  EXPECT_NEAR(still[50].players[0].angles[dof::kRHip], still[90].players[0].angles[dof::kRHip], 1e-4f);
+  // Kicks only: no kick motion under Run.
+  AnimConfig run;
+  run.detail = DetailLevel::Run;
+  const auto game = kick_game(20);
+  const auto a = animate(game, run);
+  const auto b = animate(game);
+  EXPECT_NE(a[39].ball.x, b[39].ball.x);  // the ball waits at the foot only when kicks are animated
+  EXPECT_NE(a[39].players[0].z, b[39].players[0].z);  // the full level crouches into the kick
+}
+
+TEST(Animator, LookAheadIsConfigurable) {
+  GameParams params;
+  AnimConfig cfg;
+  cfg.lookahead_cycles = 4;
+  Animator a(human_skeleton(), params, cfg);
+  std::vector<PoseFrame> out;
+  const auto game = run_game(10, 0.5);
+  for (int i = 0; i < 4; ++i) a.push(game[static_cast<std::size_t>(i)], out);
+  EXPECT_TRUE(out.empty());
+  a.push(game[4], out);
+  EXPECT_EQ(out.size(), 2u);
+}
+
+TEST(Animator, TeleportsJumpAtTheCycleAndDisconnectedPlayersStand) {
+  auto game = run_game(30, 0.3);
+  for (std::size_t i = 15; i < game.size(); ++i) game[i].players[0].x = 20;  // moved by the referee
+  for (auto& s : game) { s.players[5].state = 0; s.players[5].x = -18; s.players[5].y = -37; }
+  const auto out = animate(game);
+  EXPECT_NEAR(out[29].players[0].x, game[14].players[0].x, 1e-4);  // holds until the cycle...
+  EXPECT_NEAR(out[30].players[0].x, 20.0f, 1e-4);                   // ...then jumps
+  EXPECT_NEAR(out[31].players[5].x, -18.0f, 1e-5);
+  EXPECT_GT(out[31].players[5].z, 0.9f);
 }
 
 }  // namespace
