@@ -4,6 +4,7 @@
 #include "server/ingest/json_records.hpp"
 #include "server/ingest/json_splitter.hpp"
 #include "server/ingest/show_sequencer.hpp"
+#include "server/ingest/state_copy.hpp"
 
 namespace mc::ingest {
 namespace {
@@ -34,12 +35,14 @@ class JsonLogSource final : public StateSource {
       RecordKind kind{};
       std::string err;
       MessageRecord msg;
-      if (!decode_json_record(obj, ctx_, out, msg, kind, err)) {
+      // Decoded into a scratch state: a bad show must not clobber `out`.
+      if (!decode_json_record(obj, ctx_, scratch_, msg, kind, err)) {
         record_skip(stats_, "element at offset " + std::to_string(offset) + ": " + err);
         continue;
       }
       if (kind == RecordKind::Show) {
-        seq_.stamp(out);
+        seq_.stamp(scratch_);
+        copy_state(scratch_, out);
         ++stats_.shows;
         return true;
       }
@@ -63,6 +66,7 @@ class JsonLogSource final : public StateSource {
   IngestStats stats_;
   EventQueue events_;
   ShowSequencer seq_;
+  WorldState scratch_;
   bool reported_ = false;
 };
 

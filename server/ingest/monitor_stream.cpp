@@ -1,14 +1,18 @@
 #include "server/ingest/monitor_stream.hpp"
 
+#include "server/ingest/state_copy.hpp"
+
 namespace mc::ingest {
 
 bool MonitorStream::push(std::string_view datagram, WorldState& out) {
   const std::uint64_t n = datagrams_++;
   stats_.bytes += datagram.size();
   error_.clear();
-  switch (decoder_.decode(datagram, out, msg_, error_)) {
+  // Decoded into a scratch state: a bad show must not clobber `out`.
+  switch (decoder_.decode(datagram, scratch_, msg_, error_)) {
     case MonitorDecoder::Kind::Show:
-      seq_.stamp(out);
+      seq_.stamp(scratch_);
+      copy_state(scratch_, out);
       ++stats_.shows;
       return true;
     case MonitorDecoder::Kind::Message:

@@ -40,6 +40,7 @@ class MonitorStream {
   std::uint64_t datagrams_ = 0;
   std::string error_;
   MessageRecord msg_;
+  WorldState scratch_;
 };
 
 }  // namespace mc::ingest

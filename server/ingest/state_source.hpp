@@ -51,7 +51,9 @@ class StateSource {
   virtual ~StateSource() = default;
   // The next world state in stream order; false at the end of the input.
   // Never throws on bad input (bad records are counted in stats() and
-  // skipped). A live source blocks until a state arrives or it is stopped.
+  // skipped); a bad record never half-writes `out`, so after false `out`
+  // still holds the last state returned. A live source blocks until a state
+  // arrives or it is stopped.
   virtual bool next(WorldState& out) = 0;
   // Parameters announced so far; valid once the first state has been
   // returned (defaults if the input carried none, e.g. log v1/v2).

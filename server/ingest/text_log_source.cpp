@@ -3,6 +3,7 @@
 #include "server/ingest/event_queue.hpp"
 #include "server/ingest/line_reader.hpp"
 #include "server/ingest/show_sequencer.hpp"
+#include "server/ingest/state_copy.hpp"
 #include "server/ingest/text_show.hpp"
 
 namespace mc::ingest {
@@ -56,16 +57,19 @@ class TextLogSource final : public StateSource {
     bool ok = true;
     if (starts_with(line, "(show ")) {
       ShowExtras extras;
-      if (parse_text_show(line, out, extras, err)) {
-        if (extras.has_play_mode) play_mode_ = out.play_mode;
+      // Parsed into a scratch state so that a bad record leaves `out`
+      // holding the last good state.
+      if (parse_text_show(line, scratch_, extras, err)) {
+        if (extras.has_play_mode) play_mode_ = scratch_.play_mode;
         if (extras.has_team) {
-          left_ = out.left;
-          right_ = out.right;
+          left_ = scratch_.left;
+          right_ = scratch_.right;
         }
-        out.play_mode = play_mode_;
-        out.left = left_;
-        out.right = right_;
-        seq_.stamp(out);
+        scratch_.play_mode = play_mode_;
+        scratch_.left = left_;
+        scratch_.right = right_;
+        seq_.stamp(scratch_);
+        copy_state(scratch_, out);
         ++stats_.shows;
         return true;
       }
@@ -111,6 +115,7 @@ class TextLogSource final : public StateSource {
   IngestStats stats_;
   EventQueue events_;
   ShowSequencer seq_;
+  WorldState scratch_;
   PlayMode play_mode_ = PlayMode::Null;
   TeamInfo left_, right_;
   bool header_seen_ = false;

@@ -1,5 +1,7 @@
 #include "server/ingest/text_show.hpp"
 
+#include <memory>
+
 #include "server/ingest/sexp_cursor.hpp"
 
 namespace mc::ingest {
@@ -77,7 +79,10 @@ bool parse_player(SexpCursor& c, WorldState& out, std::uint32_t& seen, std::stri
   const int slot = player_index(side, unum);
   seen |= 1u << slot;
   PlayerState& p = out.players[static_cast<std::size_t>(slot)];
-  p = PlayerState{};
+  // Re-construct rather than assign: PlayerState's assignment is memberwise
+  // (std::pair inside an optional), its construction is plain stores.
+  std::destroy_at(&p);
+  std::construct_at(&p);
   p.side = side;
   p.unum = static_cast<std::uint8_t>(unum);
   if (!c.integer_in(p.type, -1, 1000) || !c.hex(p.state)) return fail(c, error, "bad player type/state");

@@ -150,6 +150,11 @@ TEST(TextLogSource, TruncatedPlainFileYieldsCompleteShows) {
   while (src->next(s)) ++n;
   EXPECT_EQ(n, 1);
   EXPECT_EQ(src->stats().skipped, 1u);
+  // The cut record did not clobber the last good state.
+  EXPECT_EQ(s.index, 0u);
+  EXPECT_EQ(s.time, 1);
+  EXPECT_DOUBLE_EQ(s.players[0].x, -49);
+  EXPECT_EQ(s.players[1].type, 13);
 }
 
 TEST(TextLogSource, NotALogIsRefused) {
