@@ -46,9 +46,15 @@ void MonitorClient::send_dispinit() {
 void MonitorClient::check_timers() {
   const auto now = Clock::now();
   if (connected_ && now - last_rx_ >= config_.lost_after) {
+    send_command("(dispbye)");  // in case the server is alive but silent
     connected_ = false;
     backoff_ = config_.backoff_initial;
     next_init_ = now;
+    // A fresh local port: a server that still lists our old address as a
+    // monitor would refuse a second (dispinit) from it
+    // ("only_init_allowed_on_init_port").
+    UdpSocket fresh;
+    if (fresh.open(UdpEndpoint{0, 0})) socket_ = std::move(fresh);
     stream_.push_event(SourceEvent::Kind::FeedLost,
                        "no datagram from " + server_.str() + " for " +
                            std::to_string(config_.lost_after.count()) + " ms; reconnecting");

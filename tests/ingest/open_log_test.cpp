@@ -146,6 +146,22 @@ TEST(OpenLog, DisconnectedPlayersAreParked) {
   }
 }
 
+TEST(OpenLog, SevenPlayerTeams) {
+  std::string err;
+  auto src = open_log(kData + "real/201811102352-Time_Santa_3-vs-Time_Sprot_0.rcg.gz", err);
+  ASSERT_TRUE(src) << err;
+  WorldState s;
+  ASSERT_TRUE(src->next(s));
+  int left = 0, right = 0;
+  for (int u = 1; u <= 11; ++u) {
+    left += s.players[player_index(Side::Left, u)].active();
+    right += s.players[player_index(Side::Right, u)].active();
+  }
+  EXPECT_EQ(left, 7);
+  EXPECT_EQ(right, 7);
+  EXPECT_EQ(s.play_mode, PlayMode::PlayOn);  // no kick_off line in this log
+}
+
 TEST(OpenLog, GoalPausesRepeatTime) {
   const Summary s = summarise(kData + "generated/gen19-v6long-20261122030200-Alpha_2-vs-Beta_6.rcg.gz");
   EXPECT_GE(s.max_stoppage, 40);
