@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "server/ingest/state_source.hpp"
+#include "server/ingest/monitor_stream.hpp"
 #include "tests/ingest/state_compare.hpp"
+#include "tests/ingest/test_data.hpp"
 
 namespace mc::ingest {
 namespace {
@@ -126,6 +128,72 @@ TEST(CaptureSource, ParamsArriveBeforeShows) {
   EXPECT_NEAR(src->params().goal_width(), 14.02, 1e-4);
   EXPECT_NEAR(src->params().server.number("half_time", 0), 30, 1e-9);
   EXPECT_EQ(s.play_mode, PlayMode::BeforeKickOff);
+}
+
+// live-capture/*.txt.gz: "#N t=.. from=.. size=.." then the payload as text.
+struct LiveReplay {
+  IngestStats stats;
+  std::vector<WorldState> states;
+  GameParams params;
+};
+LiveReplay replay_text_dump(const std::string& file) {
+  const std::string text = testing::decoded(testing::rcg("live-capture/" + file));
+  MonitorStream stream;
+  LiveReplay r;
+  std::size_t pos = 0;
+  std::string payload;
+  bool in_record = false;
+  auto flush = [&] {
+    while (!payload.empty() && payload.back() == '\n') payload.pop_back();
+    // The dump prints the terminating NUL as the two characters "\0".
+    if (payload.size() >= 2 && payload.compare(payload.size() - 2, 2, "\\0") == 0)
+      payload.replace(payload.size() - 2, 2, 1, '\0');
+    WorldState s;
+    if (in_record && stream.push(payload, s)) r.states.push_back(s);
+    payload.clear();
+  };
+  while (pos < text.size()) {
+    std::size_t nl = text.find('\n', pos);
+    if (nl == std::string::npos) nl = text.size();
+    const std::string_view line(text.data() + pos, nl - pos);
+    pos = nl + 1;
+    if (!line.empty() && line[0] == '#') {
+      flush();
+      in_record = line.size() > 1 && line[1] != ' ';  // "#N ..." opens a record
+      continue;
+    }
+    if (!payload.empty()) payload += '\n';
+    payload += line;
+  }
+  flush();
+  r.stats = stream.stats();
+  r.params = stream.params();
+  return r;
+}
+
+TEST(CaptureSource, LiveHeliosCaptureV5) {
+  const LiveReplay r = replay_text_dump("helios-live-monitor-v5.txt.gz");
+  EXPECT_EQ(r.stats.skipped, 0u) << (r.stats.errors.empty() ? "" : r.stats.errors[0]);
+  ASSERT_GT(r.states.size(), 150u);
+  EXPECT_EQ(r.params.player_types.size(), 18u);
+  EXPECT_EQ(r.states.back().left.name, "HELIOS_A");
+  EXPECT_EQ(r.states.back().time, 435);
+  EXPECT_TRUE(r.states.back().players[0].focus_point.has_value());
+}
+
+TEST(CaptureSource, LivePregameCaptureV4) {
+  const LiveReplay r = replay_text_dump("helios-live-monitor-v4-pregame.txt.gz");
+  EXPECT_EQ(r.stats.skipped, 0u) << (r.stats.errors.empty() ? "" : r.stats.errors[0]);
+  ASSERT_GT(r.states.size(), 100u);
+  EXPECT_EQ(r.states[0].play_mode, PlayMode::BeforeKickOff);
+  // 29 lineup shows at time 0 (time does not advance before kick-off).
+  EXPECT_EQ(r.states[28].time, 0);
+  EXPECT_EQ(r.states[28].stoppage, 28);
+  EXPECT_EQ(r.states[29].time, 1);
+  EXPECT_EQ(r.states[29].stoppage, 0);
+  EXPECT_EQ(r.states[29].play_mode, PlayMode::KickOffL);
+  EXPECT_TRUE(r.states[29].players[0].capacity.has_value());   // v4
+  EXPECT_FALSE(r.states[29].players[0].focus_point.has_value());
 }
 
 }  // namespace
