@@ -91,7 +91,13 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
   float cycle = 2.0f * human_step_length(s.speed) * stride_factor;
   cycle = std::max(cycle, 2.0f * (ds + dturn) / (prm.cadence_cap * dt));
   s.cycle_m = cycle;
-  const float beta = clampf(prm.max_stance_travel / cycle, 0.18f, 0.62f);  // stance fraction
+  // Stance fraction. Above ~4 m/s a planted leg would sweep more than the
+  // joint speed limit per frame (v * dt / leg length), so the foot stays
+  // down for one frame only: a touch-and-go, as a sprinter's 0.1 s contact
+  // looks at 20 frames per second.
+  const bool one_frame = ds > prm.one_frame_stance_m;
+  const float travel = one_frame ? ds * 0.98f : prm.max_stance_travel;
+  const float beta = clampf(travel / cycle, 0.02f, 0.62f);
   const float run = clampf((s.speed - 2.2f) / 2.5f, 0.0f, 1.0f);
   const float moving = in.rest ? 0.0f : clampf(s.speed / 0.6f, 0.0f, 1.0f);
 
@@ -133,6 +139,11 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
   for (int i = 0; i < 2; ++i) {
     const FootState& f = s.feet[i];
     const FootState& o = s.feet[1 - i];
+    if (f.planted && f.release) {
+      wants[i] = true;
+      eager[i] = 2.0f;
+      continue;
+    }
     if (!f.planted || dphase <= 0) continue;
     float bx, bz;
     body.to_body(f.x, f.y, bx, bz);
@@ -142,7 +153,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     const bool too_far = f.planted_frames >= 2 && std::hypot(bx, bz - kSide[i] * dims::kHipHalfWidth) > 0.55f;
     const bool twisted = f.planted_frames >= 2 && std::fabs(delta_deg(f.yaw, in.heading)) > 50.0f;
     const bool due = f.stance_phase + dphase >= beta || twisted;
-    const bool other_ok = o.planted ? true : (beta < 0.5f && o.progress >= 0.4f);
+    const bool other_ok = o.planted || (beta < 0.5f && (o.progress >= 0.4f || one_frame));
     // A foot being dragged goes even if the other is in the air (a flight
     // phase, as in sprinting).
     if ((due && other_ok) || too_far) {
@@ -151,11 +162,13 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     }
   }
   // Both planted and both due: the longer stance goes first, the other waits.
-  if (wants[0] && wants[1] && s.feet[0].planted && s.feet[1].planted) wants[eager[0] >= eager[1] ? 1 : 0] = false;
+  if (wants[0] && wants[1] && s.feet[0].planted && s.feet[1].planted && !s.feet[0].release && !s.feet[1].release)
+    wants[eager[0] >= eager[1] ? 1 : 0] = false;
 
   for (int i = 0; i < 2; ++i) {
     FootState& f = s.feet[i];
     ++f.since_landing;
+    f.release = false;
     if (wants[i]) {
       f.planted = false;
       f.from_x = f.x; f.from_y = f.y; f.from_yaw = f.yaw;
@@ -237,7 +250,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
   SampleGaitJob sample{gait_keys(), s.posture_m, &out.sample, nullptr, nullptr};
   sample.Run();
   const float amp = clampf(s.speed / 1.5f, 0.0f, 1.0f) * (in.rest ? 0.3f : 1.0f);
-  float pelvis = kStandPelvis - 0.06f * run * stride_factor - 0.02f * amp +
+  float pelvis = kStandPelvis - 0.06f * run * stride_factor - 0.04f * amp +
                  amp * (0.012f * (1.0f - run) * out.sample.bob_walk + 0.03f * run * out.sample.bob_run);
   for (int i = 0; i < 2; ++i) {
     const FootState& f = s.feet[i];
@@ -250,9 +263,9 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     // Only planted feet hold the pelvis down; a swinging foot may tuck.
     if (f.planted) pelvis = std::min(pelvis, pelvis_limit(t.ankle_ms, i));
   }
-  // The pelvis drops at most 5 cm and rises at most 3 cm per frame, so the
+  // The pelvis moves at most 1.5 cm per frame, so the
   // knees never snap; the rare foot it leaves out of reach is clamped by IK.
-  pelvis = clampf(pelvis, s.pelvis_height - 0.05f, s.pelvis_height + 0.03f);
+  pelvis = clampf(pelvis, s.pelvis_height - 0.015f, s.pelvis_height + 0.015f);
   s.pelvis_height = std::max(pelvis, 0.62f);
   out.pelvis_height = s.pelvis_height;
   out.run = run;

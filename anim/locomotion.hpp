@@ -20,6 +20,7 @@ struct LocomotionParams {
   float hard_cadence_cap = 4.5f;  // steps/s no foot ever exceeds: a touch-down waits (hovering) if needed
   float speed_halflife_s = 0.25f; // low-pass of the server's speed (anchors D.1: 0.2-0.3 s)
   float max_stance_travel = 0.8f; // m the body may cover over one planted foot
+  float one_frame_stance_m = 0.19f; // m per frame above which a foot is down for one frame only
   float settle_cadence = 2.0f;    // steps/s of the steps that bring the feet to rest
   float foot_spacing = 0.11f;     // m, ankle from the body's midline at rest
 };
@@ -34,6 +35,7 @@ struct FootState {
   int planted_frames = 0;         // frames since touch-down (gates early steps: cadence)
   float stance_phase = 0;         // cycle fraction covered since touch-down
   int since_landing = 100;        // frames since the previous touch-down
+  bool release = false;           // set by the caller: lift this planted foot now (joint speed limit)
   float to_x = 0, to_y = 0;       // landing spot being aimed at, field m (moves at a bounded speed)
 };
 

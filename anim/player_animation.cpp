@@ -137,31 +137,38 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   // fast on purpose) and for the neck and head yaw (which follow the server's
   // neck angle, turned up to 180 deg per cycle).
   const bool free = in.reset || w > 0 || ctx.was_in_action;
-  // A leg in a continuing stance is left to IK: holding its foot still on
-  // the grass comes first (its hip sweeps v * dt / leg length per frame).
-  const bool hold_leg[2] = {lo.planted[0] && ctx.last_planted[0], lo.planted[1] && ctx.last_planted[1]};
+  // Where the limit holds a planted leg back, that foot lets go of the
+  // grass (it is lifted from where the limit left it) rather than slide.
+  bool released[2] = {false, false};
   for (int d = 0; d < dof::kCount && !free; ++d) {
     if (d == dof::kNeck || d == dof::kHead) continue;
-    if (d >= dof::kRHip && d < dof::kLHip && hold_leg[0]) continue;
-    if (d >= dof::kLHip && hold_leg[1]) continue;
     const auto k = static_cast<std::size_t>(d);
-    a[k] = ctx.last_angles[k] + clampf(a[k] - ctx.last_angles[k], -kMaxJointStepDeg, kMaxJointStepDeg);
+    const float limited = ctx.last_angles[k] + clampf(a[k] - ctx.last_angles[k], -kMaxJointStepDeg, kMaxJointStepDeg);
+    if (std::fabs(limited - a[k]) > 0.01f && d >= dof::kRHip) released[d >= dof::kLHip ? 1 : 0] = true;
+    a[k] = limited;
   }
   ctx.was_in_action = w > 0;
   clamp_to_limits(limits_from, a);
   // A foot touching down where the speed limit let it reach (not quite its
-  // target) is held there, so that its stance does not start with a slide.
-  if (!free && ((lo.planted[0] && !hold_leg[0]) || (lo.planted[1] && !hold_leg[1]))) {
+  // target) is held there, so that its stance does not start with a slide;
+  // a released foot swings off from where it is.
+  if (!free && (lo.planted[0] || lo.planted[1])) {
     std::array<glm::mat4, kHumanJointCount> m;
     LocalToModelJob fk{&limits_from, std::span<const float>(a.data(), a.size()), glm::vec3(0, pelvis_h, 0), m};
     if (fk.Run()) {
       const BodyFrame body(px, py, heading);
       const int foot_joint[2] = {kRFoot, kLFoot};
       for (int i = 0; i < 2; ++i) {
-        if (!lo.planted[i] || hold_leg[i]) continue;
+        if (!lo.planted[i]) continue;
+        const bool landing = !ctx.last_planted[i];
+        if (!landing && !released[i]) continue;
         const glm::vec4& ankle = m[static_cast<std::size_t>(foot_joint[i])][3];
         FootState& f = ctx.loco.feet[i];
         body.to_field(ankle.x, ankle.z, f.x, f.y);
+        if (released[i] && !landing) {
+          f.release = true;
+          lo.planted[i] = false;
+        }
       }
     }
   }

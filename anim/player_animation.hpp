@@ -33,9 +33,9 @@ struct PlayerAnim {
   bool was_active = false;
 };
 
-// Fastest turn of the body between two frames: about a half turn in 0.4 s,
-// what a human manages; the server allows 180 deg per cycle.
-inline constexpr float kMaxTurnPerFrameDeg = 22.5f;
+// Fastest turn of the body between two frames: a half turn in 0.75 s, so
+// that a planted leg twists within the joint speed limit; the server allows 180 deg per cycle.
+inline constexpr float kMaxTurnPerFrameDeg = 12.0f;
 // Fastest joint rotation between two frames outside actions and teleports
 // (280 deg/s): what the 2D data cannot justify is not shown as a snap.
 inline constexpr float kMaxJointStepDeg = 14.0f;

@@ -31,6 +31,8 @@ struct QualityReport {
   long limit_violations = 0;     // angles outside their joint's limits (0.01 deg tolerance)
   double max_jump_deg = 0;       // largest |angle change| between frames outside actions and resets
   std::string max_jump_where;    // frame, player and dof of that jump
+  long jumps_over_15 = 0;        // joint-frames with a change over 15 deg (same exclusions)
+  long joint_frames = 0;         // joint-frames examined for jumps
   double max_jump_swing_deg = 0; // same, leaving out legs whose foot stays planted across the two frames
   double max_head_jump_deg = 0;  // same for the neck and head yaw, which follow the server's neck angle
   std::string max_cadence_where; // frame and player of the fastest stride
