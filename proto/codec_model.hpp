@@ -45,19 +45,27 @@ struct LastResiduals {
 // swinging arm is better extrapolated. Per player and faster decay was
 // tried and is worse (it chases noise). Both sides learn it from decoded
 // values, so it costs no bits.
+//
+// Frames at the cycle (substep 0) and half-way (substep 1) keep separate
+// costs: anim places the root on the 2D state at substep 0 and interpolates
+// at substep 1, and the best predictor differs (on a real game, linear wins
+// at substep 0 and hold at substep 1).
 struct PredictorCosts {
   static constexpr int kValues = 4 + kMaxDof;  // x, y, z, heading, then the dofs
-  std::array<std::uint32_t, kValues> hold{}, linear{};
+  std::array<std::array<std::uint32_t, kValues>, 2> hold{}, linear{};
+  int substep = 0;  // of the frame being coded, 0 or 1
   bool use_linear(std::size_t, int value) const {
-    return linear[static_cast<std::size_t>(value)] <= hold[static_cast<std::size_t>(value)];
+    const auto s = static_cast<std::size_t>(substep);
+    return linear[s][static_cast<std::size_t>(value)] <= hold[s][static_cast<std::size_t>(value)];
   }
   void learn(std::size_t, int value, std::int64_t err_hold, std::int64_t err_linear) {
     const auto upd = [](std::uint32_t& c, std::int64_t e) {
       const std::int64_t m = std::min<std::int64_t>(e < 0 ? -e : e, 1023);
       c = static_cast<std::uint32_t>(c - (c >> 7) + m);
     };
-    upd(hold[static_cast<std::size_t>(value)], err_hold);
-    upd(linear[static_cast<std::size_t>(value)], err_linear);
+    const auto s = static_cast<std::size_t>(substep);
+    upd(hold[s][static_cast<std::size_t>(value)], err_hold);
+    upd(linear[s][static_cast<std::size_t>(value)], err_linear);
   }
 };
 
@@ -198,8 +206,9 @@ bool walk_keyframe(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q)
 }
 
 template <class Io>
-bool walk_delta(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q) {
+bool walk_delta(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q, int substep) {
   ModelSet& s = m.delta;
+  m.costs.substep = substep & 1;
   const QuantFrame& p1 = m.prev;
   const QuantFrame& p0 = m.prev2;
   std::int32_t r = 0;

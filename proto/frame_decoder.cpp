@@ -87,7 +87,7 @@ bool FrameDecoder::decode(std::string_view bytes, PoseFrame& out, std::string& e
     }
     ok = ok && detail::walk_keyframe(io, next, quant_, q);
   } else {
-    ok = detail::walk_delta(io, next, quant_, q);
+    ok = detail::walk_delta(io, next, quant_, q, h.substep);
   }
   if (ok && io.dec.overrun()) {
     error = std::string(h.keyframe ? "keyframe " : "delta frame ") + std::to_string(h.seq) + " truncated";

@@ -129,8 +129,8 @@ std::string FrameEncoder::encode(const PoseFrame& frame, bool& is_keyframe) {
     detail::walk_keyframe(io, model_, quant_, q);
     since_key_ = 1;
   } else {
-    detail::walk_delta(io, model_, quant_, q);
-    if (since_key_ % 2 == 1) learn_partners();  // every other delta: half the cost, as good a sample
+    detail::walk_delta(io, model_, quant_, q, frame.substep);
+    if (since_key_ % 4 == 1) learn_partners();  // every 4th delta: a quarter of the cost, as good a sample
     ++since_key_;
   }
   model_.push(q);

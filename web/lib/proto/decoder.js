@@ -173,18 +173,25 @@ function partnerTerm(c2, r) {
 }
 
 // Hold-vs-linear running costs per kind of value (proto/codec_model.hpp PredictorCosts).
+// Separate costs for substep 0 and 1 frames.
 class PredictorCosts {
   constructor(dofs) {
-    this.hold = new Uint32Array(4 + dofs);
-    this.linear = new Uint32Array(4 + dofs);
+    this.n = 4 + dofs;
+    this.hold = new Uint32Array(2 * this.n);
+    this.linear = new Uint32Array(2 * this.n);
+    this.base = 0; // n * substep of the frame being decoded
+  }
+  setSubstep(substep) {
+    this.base = (substep & 1) * this.n;
   }
   useLinear(value) {
-    return this.linear[value] <= this.hold[value];
+    return this.linear[this.base + value] <= this.hold[this.base + value];
   }
   learn(value, errHold, errLinear) {
+    const i = this.base + value;
     const upd = (arr, e) => {
-      const c = arr[value];
-      arr[value] = c - (c >>> 7) + Math.min(Math.abs(e), 1023);
+      const c = arr[i];
+      arr[i] = c - (c >>> 7) + Math.min(Math.abs(e), 1023);
     };
     upd(this.hold, errHold);
     upd(this.linear, errLinear);
@@ -255,6 +262,7 @@ export class FrameDecoder {
         }
         q = this.#readKeyframe(rc);
       } else {
+        this.costs.setSubstep(h.substep);
         q = this.#readDelta(rc);
       }
       if (rc.overrun) throw new Error(`${h.keyframe ? 'keyframe' : 'delta frame'} ${h.seq} truncated`);
