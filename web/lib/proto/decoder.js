@@ -165,6 +165,7 @@ function newModelSet(dofs) {
 }
 
 const PARTNER_COEF2 = [-4, -3, -2, -1, 1, 2, 3, 4];
+const ROOT_KEYS = ['x', 'y', 'z'];
 
 // round(c2 * r / 2), halves away from zero (proto/codec_model.hpp PartnerTable::term).
 function partnerTerm(c2, r) {
@@ -296,21 +297,24 @@ export class FrameDecoder {
     this.costs.learn(3, wrapSigned(v - a1), wrapSigned(v - this.#predictHeading(a1, a0)));
   }
 
-  // Prediction + decoded residual, range-checked; returns [value, residual].
+  // Prediction + decoded residual, range-checked; returns the value and
+  // leaves the residual in this.res (no per-value allocation).
   #value(rc, model, pred, lo, hi, zctx, act) {
     const res = model.decode(rc, zctx, act);
     const v = pred + res;
     if (v < lo || v > hi) {
       throw new Error(rc.overrun ? 'pose frame truncated' : 'corrupt pose frame: value out of range');
     }
-    return [v, res];
+    this.res = res;
+    return v;
   }
   #heading(rc, model, pred, zctx, act) {
     const res = model.decode(rc, zctx, act);
     if (res < -HEADING_STEPS / 2 || res >= HEADING_STEPS / 2) {
       throw new Error(rc.overrun ? 'pose frame truncated' : 'corrupt pose frame: heading out of range');
     }
-    return [wrapHeading(pred + res), res];
+    this.res = res;
+    return wrapHeading(pred + res);
   }
 
   // proto/codec_model.hpp walk_keyframe.
@@ -326,24 +330,23 @@ export class FrameDecoder {
       this.partner[d] = partner;
       this.coef2[d] = PARTNER_COEF2[coef];
     }
-    for (let a = 0; a < 3; a++) [q.ball[a]] = this.#value(rc, a < 2 ? s.ballXY : s.ballZ, 0, POS_MIN, POS_MAX, 0, 0);
+    for (let a = 0; a < 3; a++) q.ball[a] = this.#value(rc, a < 2 ? s.ballXY : s.ballZ, 0, POS_MIN, POS_MAX, 0, 0);
     for (let i = 0; i < MAX_PLAYERS; i++) {
       const p = q.players[i];
       const before = i > 0 ? q.players[i - 1] : null;
       p.side = rc.direct(2);
       p.unum = rc.direct(4);
       p.state = rc.varbits();
-      [p.x] = this.#value(rc, s.posXY, 0, POS_MIN, POS_MAX, 0, 0);
-      [p.y] = this.#value(rc, s.posXY, 0, POS_MIN, POS_MAX, 0, 0);
-      [p.z] = this.#value(rc, s.posZ, before ? before.z : 0, POS_MIN, POS_MAX, 0, 0);
-      [p.heading] = this.#heading(rc, s.heading, 0, 0, 0);
+      p.x = this.#value(rc, s.posXY, 0, POS_MIN, POS_MAX, 0, 0);
+      p.y = this.#value(rc, s.posXY, 0, POS_MIN, POS_MAX, 0, 0);
+      p.z = this.#value(rc, s.posZ, before ? before.z : 0, POS_MIN, POS_MAX, 0, 0);
+      p.heading = this.#heading(rc, s.heading, 0, 0, 0);
       let prevNonzero = false;
       for (let d = 0; d < this.dofCount; d++) {
         const g = this.grids[d];
         const pred = before ? before.angles[d] : g.restIndex;
-        const [v, r] = this.#value(rc, s.angle[d], pred, 0, g.steps - 1, zeroCtx(0, prevNonzero), 0);
-        p.angles[d] = v;
-        prevNonzero = r !== 0;
+        p.angles[d] = this.#value(rc, s.angle[d], pred, 0, g.steps - 1, zeroCtx(0, prevNonzero), 0);
+        prevNonzero = this.res !== 0;
       }
     }
     return q;
@@ -360,10 +363,9 @@ export class FrameDecoder {
     for (let a = 0; a < 3; a++) {
       const act = activityClass(last.ball[a]);
       const pred = this.#predict(p1.ball[a], p0.ball[a], POS_MIN, POS_MAX);
-      const [v, r] = this.#value(rc, a < 2 ? s.ballXY : s.ballZ, pred, POS_MIN, POS_MAX, zeroCtx(act, prevNonzero), act);
-      q.ball[a] = v;
-      last.ball[a] = r;
-      prevNonzero = r !== 0;
+      q.ball[a] = this.#value(rc, a < 2 ? s.ballXY : s.ballZ, pred, POS_MIN, POS_MAX, zeroCtx(act, prevNonzero), act);
+      last.ball[a] = this.res;
+      prevNonzero = this.res !== 0;
     }
     for (let i = 0; i < MAX_PLAYERS; i++) {
       const p = q.players[i];
@@ -380,21 +382,22 @@ export class FrameDecoder {
       }
       const rootLast = last.root[i];
       prevNonzero = false;
-      for (const [c, k] of [[0, 'x'], [1, 'y'], [2, 'z']]) {
+      for (let c = 0; c < 3; c++) {
+        const k = ROOT_KEYS[c];
         const act = activityClass(rootLast[c]);
         const pred = this.#predict(a1[k], a0[k], POS_MIN, POS_MAX, this.costs.useLinear(c));
-        const [v, r] = this.#value(rc, c < 2 ? s.posXY : s.posZ, pred, POS_MIN, POS_MAX, zeroCtx(act, prevNonzero), act);
+        const v = this.#value(rc, c < 2 ? s.posXY : s.posZ, pred, POS_MIN, POS_MAX, zeroCtx(act, prevNonzero), act);
         p[k] = v;
         this.#learn(c, v, a1[k], a0[k], POS_MIN, POS_MAX);
-        rootLast[c] = r;
-        prevNonzero = r !== 0;
+        rootLast[c] = this.res;
+        prevNonzero = this.res !== 0;
       }
       const hAct = activityClass(rootLast[3]);
-      const [hv, hr] = this.#heading(rc, s.heading, this.#predictHeading(a1.heading, a0.heading, this.costs.useLinear(3)),
+      const hv = this.#heading(rc, s.heading, this.#predictHeading(a1.heading, a0.heading, this.costs.useLinear(3)),
         zeroCtx(hAct, prevNonzero), hAct);
       p.heading = hv;
       this.#learnHeading(hv, a1.heading, a0.heading);
-      rootLast[3] = hr;
+      rootLast[3] = this.res;
       const angleLast = last.angle[i];
       const raw = this.rawResidual[i];
       prevNonzero = false;
@@ -404,12 +407,12 @@ export class FrameDecoder {
         const pred = this.#predict(a1.angles[d], a0.angles[d], 0, hi, this.costs.useLinear(4 + d));
         const partner = this.partner[d];
         const adj = partner >= 0 ? partnerTerm(this.coef2[d], raw[partner]) : 0;
-        const [v, r] = this.#value(rc, s.angle[d], pred + adj, 0, hi, zeroCtx(act, prevNonzero), act);
+        const v = this.#value(rc, s.angle[d], pred + adj, 0, hi, zeroCtx(act, prevNonzero), act);
         p.angles[d] = v;
         raw[d] = v - pred;
         this.#learn(4 + d, v, a1.angles[d], a0.angles[d], 0, hi);
-        angleLast[d] = r;
-        prevNonzero = r !== 0;
+        angleLast[d] = this.res;
+        prevNonzero = this.res !== 0;
       }
     }
     return q;
