@@ -55,6 +55,7 @@ bool LogFeed::start(std::string& error) {
   }
   hello_ = make_hello(first, source->params(), config_.keyframe_interval, config_.log_path);
   channel_->set_hello(hello_);
+  channel_->set_feed_state(relay::FeedState::Live);
   thread_ = std::thread([this] { run(); });
   return true;
 }
@@ -65,7 +66,10 @@ void LogFeed::stop() {
     stopping_ = true;
   }
   wake_.notify_all();
-  if (thread_.joinable()) thread_.join();
+  if (thread_.joinable()) {
+    thread_.join();
+    channel_->set_feed_state(relay::FeedState::Ended);
+  }
 }
 
 bool LogFeed::wait_until(Clock::time_point deadline) {
@@ -78,6 +82,7 @@ void LogFeed::run() {
     if (!play_once()) return;
     relay::log_event("feed_loop", config_.log_path);
   } while (config_.loop);
+  channel_->set_feed_state(relay::FeedState::Ended);
 }
 
 bool LogFeed::play_once() {

@@ -1,12 +1,28 @@
-// matchcast-server: reads a game, animates it and serves it to spectators.
+// matchcast-server: reads games, animates them and serves them to spectators.
+#include <sys/resource.h>
+
 #include <csignal>
 #include <cstdio>
 #include <string>
 
+#include "server/app/feed_control.hpp"
 #include "server/app/log_feed.hpp"
 #include "server/app/server_options.hpp"
 #include "server/relay/log.hpp"
 #include "server/relay/relay_server.hpp"
+
+namespace {
+
+// Every spectator is a file descriptor: use all the process may have.
+void raise_fd_limit() {
+  rlimit r{};
+  if (getrlimit(RLIMIT_NOFILE, &r) == 0 && r.rlim_cur < r.rlim_max) {
+    r.rlim_cur = r.rlim_max;
+    setrlimit(RLIMIT_NOFILE, &r);
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   std::string message;
@@ -16,6 +32,7 @@ int main(int argc, char** argv) {
     std::fprintf(exit_code ? stderr : stdout, "%s\n", message.c_str());
     return exit_code;
   }
+  raise_fd_limit();
 
   // Block the stop signals before any thread starts, so that every thread
   // inherits the mask and only sigwait() below sees them.
@@ -26,14 +43,16 @@ int main(int argc, char** argv) {
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
   std::signal(SIGPIPE, SIG_IGN);
 
-  auto channel = std::make_shared<mc::relay::Channel>("live");
-  mc::app::LogFeed feed(options->feed, channel);
+  auto channels = std::make_shared<mc::relay::ChannelRegistry>();
+  mc::app::FeedControl feeds(channels);
   std::string error;
-  if (!feed.start(error)) {
-    std::fprintf(stderr, "matchcast-server: %s\n", error.c_str());
-    return 1;
+  for (const auto& cf : options->feeds) {
+    if (!feeds.add(cf.channel, cf.feed, error)) {
+      std::fprintf(stderr, "matchcast-server: %s\n", error.c_str());
+      return 1;
+    }
   }
-  mc::relay::RelayServer server(options->relay, channel);
+  mc::relay::RelayServer server(options->relay, channels, &feeds);
   if (!server.start(error)) {
     std::fprintf(stderr, "matchcast-server: %s\n", error.c_str());
     if (options->relay.port != 0)
@@ -50,7 +69,8 @@ int main(int argc, char** argv) {
   int sig = 0;
   sigwait(&stop_signals, &sig);
   mc::relay::log_event("stopping", sig == SIGTERM ? "SIGTERM" : "SIGINT");
-  feed.stop();
+  feeds.stop_all();
   server.stop();
+  mc::relay::log_event("stopped");
   return 0;
 }

@@ -17,6 +17,9 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   ServerOptions o;
   const std::string source_dir = MATCHCAST_SOURCE_DIR;
   std::string config_file;
+  std::vector<std::string> logs;
+  std::string origins;
+  FeedConfig feed;
   unsigned max_queue_kb = 0, stall_ms = 0;
   po::options_description desc(
       "matchcast-server: broadcast a RoboCup 2D game as a live 3D stream\n\nOptions");
@@ -24,12 +27,12 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   desc.add_options()
     ("help,h", "print this help and exit")
     ("config", po::value(&config_file), "read options from this file (key = value lines)")
-    ("rcg", po::value(&o.feed.log_path)->default_value(
-        source_dir + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz"),
-        "game log to broadcast (.rcg/.rcg.gz, any version)")
-    ("loop", po::value(&o.feed.loop)->default_value(true), "start the log again at its end (true/false)")
-    ("speed", po::value(&o.feed.speed)->default_value(1.0), "playback speed, 1 = real time")
-    ("keyframe-interval", po::value(&o.feed.keyframe_interval)->default_value(20),
+    ("rcg", po::value(&logs)->composing(),
+        "game log to broadcast (.rcg/.rcg.gz, any version), as PATH or CHANNEL=PATH; "
+        "repeat for several games at once (default: the bundled game on channel 'live')")
+    ("loop", po::value(&feed.loop)->default_value(true), "start the log again at its end (true/false)")
+    ("speed", po::value(&feed.speed)->default_value(1.0), "playback speed, 1 = real time")
+    ("keyframe-interval", po::value(&feed.keyframe_interval)->default_value(20),
         "frames between keyframes (20 = 1 s)")
     ("address", po::value(&o.relay.address)->default_value("127.0.0.1"), "address to listen on")
     ("port", po::value(&o.relay.port)->default_value(8080), "TCP port, 0 = any free port")
@@ -43,7 +46,12 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     ("stall-timeout-ms", po::value(&stall_ms)->default_value(static_cast<unsigned>(o.relay.stall_timeout.count())),
         "a spectator whose write is stuck this long is disconnected")
     ("max-message-bytes", po::value(&o.relay.max_inbound_message)->default_value(o.relay.max_inbound_message),
-        "largest message a spectator may send");
+        "largest message a spectator may send")
+    ("max-connections-per-ip", po::value(&o.relay.max_connections_per_ip)->default_value(o.relay.max_connections_per_ip),
+        "connections one client address may hold, 0 = no limit")
+    ("allowed-origins", po::value(&origins), "comma-separated Origin values allowed to open the stream (default: any)")
+    ("control-token", po::value(&o.relay.control_token),
+        "bearer token for POST /control/... (default: control disabled)");
   // clang-format on
   try {
     po::variables_map vm;
@@ -67,15 +75,49 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     exit_code = 2;
     return std::nullopt;
   }
-  if (o.feed.speed <= 0 || o.feed.speed > 100) {
+  if (feed.speed <= 0 || feed.speed > 100) {
     message = "matchcast-server: --speed must be in (0, 100]";
     exit_code = 2;
     return std::nullopt;
   }
-  if (o.feed.keyframe_interval < 1 || o.feed.keyframe_interval > 1200) {
+  if (feed.keyframe_interval < 1 || feed.keyframe_interval > 1200) {
     message = "matchcast-server: --keyframe-interval must be in [1, 1200]";
     exit_code = 2;
     return std::nullopt;
+  }
+  if (logs.empty()) logs.push_back(source_dir + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz");
+  for (std::size_t i = 0; i < logs.size(); ++i) {
+    ChannelFeed cf{i == 0 ? "live" : "live" + std::to_string(i + 1), feed};
+    const auto eq = logs[i].find('=');
+    // CHANNEL=PATH, unless the '=' belongs to the path (a '/' before it).
+    if (eq != std::string::npos && logs[i].find('/') > eq) {
+      cf.channel = logs[i].substr(0, eq);
+      cf.feed.log_path = logs[i].substr(eq + 1);
+    } else {
+      cf.feed.log_path = logs[i];
+    }
+    if (cf.channel.empty() || cf.channel.find_first_not_of(
+          "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") != std::string::npos) {
+      message = "matchcast-server: channel names use letters, digits, '_', '-' and '.' only: '" + cf.channel + "'";
+      exit_code = 2;
+      return std::nullopt;
+    }
+    for (const auto& other : o.feeds)
+      if (other.channel == cf.channel) {
+        message = "matchcast-server: channel '" + cf.channel + "' given twice";
+        exit_code = 2;
+        return std::nullopt;
+      }
+    o.feeds.push_back(cf);
+  }
+  for (std::size_t pos = 0; pos < origins.size();) {
+    auto comma = origins.find(',', pos);
+    if (comma == std::string::npos) comma = origins.size();
+    std::string one = origins.substr(pos, comma - pos);
+    one.erase(0, one.find_first_not_of(' '));
+    one.erase(one.find_last_not_of(' ') + 1);
+    if (!one.empty()) o.relay.allowed_origins.push_back(one);
+    pos = comma + 1;
   }
   o.relay.max_queue_bytes = static_cast<std::size_t>(max_queue_kb) * 1024;
   o.relay.stall_timeout = std::chrono::milliseconds(stall_ms);

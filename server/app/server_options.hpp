@@ -5,15 +5,22 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "server/app/log_feed.hpp"
 #include "server/relay/relay_config.hpp"
 
 namespace mc::app {
 
+// One log broadcast on one channel.
+struct ChannelFeed {
+  std::string channel;
+  FeedConfig feed;
+};
+
 struct ServerOptions {
   relay::RelayConfig relay;
-  FeedConfig feed;
+  std::vector<ChannelFeed> feeds;  // at least one
 };
 
 // Parses argv. Returns nullopt when the program should exit: after --help

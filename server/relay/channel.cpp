@@ -53,6 +53,26 @@ std::size_t Channel::subscribers() const {
   return subscribers_.size();
 }
 
+const char* feed_state_name(FeedState s) {
+  switch (s) {
+    case FeedState::Starting: return "starting";
+    case FeedState::Live: return "live";
+    case FeedState::Lost: return "lost";
+    case FeedState::Ended: return "ended";
+  }
+  return "unknown";
+}
+
+void Channel::shutdown_subscribers() {
+  std::vector<std::shared_ptr<Subscriber>> targets;
+  {
+    std::lock_guard lock(mutex_);
+    for (auto& w : subscribers_)
+      if (auto p = w.lock()) targets.push_back(std::move(p));
+  }
+  for (auto& t : targets) t->shutdown();
+}
+
 void Channel::broadcast(const Message& m) {
   // Copy the live subscribers under the lock, deliver outside it, so a slow
   // deliver never blocks joins or the next publish's bookkeeping.

@@ -24,7 +24,13 @@ class Subscriber {
   virtual ~Subscriber() = default;
   // Called from the publisher's thread; must not block.
   virtual void deliver(const Message& m) = 0;
+  // The server is stopping: say goodbye (a close frame) and end.
+  virtual void shutdown() {}
 };
+
+// Where a channel's input stands, for spectators' banners and /metrics.
+enum class FeedState : int { Starting = 0, Live = 1, Lost = 2, Ended = 3 };
+const char* feed_state_name(FeedState s);
 
 class Channel {
  public:
@@ -47,6 +53,11 @@ class Channel {
   void leave(const Subscriber* s);
 
   std::size_t subscribers() const;
+  // Asks every subscriber to shut down (graceful server stop).
+  void shutdown_subscribers();
+
+  void set_feed_state(FeedState s) { feed_state_.store(static_cast<int>(s)); }
+  FeedState feed_state() const { return static_cast<FeedState>(feed_state_.load()); }
   std::uint64_t frames_published() const { return frames_published_.load(); }
 
  private:
@@ -58,6 +69,7 @@ class Channel {
   std::vector<Message> gop_;  // latest keyframe + deltas since
   std::vector<std::weak_ptr<Subscriber>> subscribers_;
   std::atomic<std::uint64_t> frames_published_{0};
+  std::atomic<int> feed_state_{0};
 };
 
 }  // namespace mc::relay

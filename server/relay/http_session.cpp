@@ -2,10 +2,12 @@
 
 #include <boost/asio/dispatch.hpp>
 #include <boost/beast/websocket.hpp>
+#include <algorithm>
 #include <chrono>
 
 #include "server/relay/channel.hpp"
 #include "server/relay/log.hpp"
+#include "server/relay/metrics.hpp"
 #include "server/relay/websocket_session.hpp"
 
 namespace beast = boost::beast;
@@ -40,6 +42,25 @@ std::string_view path_of(std::string_view target) {
 }
 
 }  // namespace
+
+std::string query_param(std::string_view target, std::string_view key) {
+  const auto q = target.find('?');
+  if (q == std::string_view::npos) return {};
+  std::string_view rest = target.substr(q + 1);
+  while (!rest.empty()) {
+    const auto amp = rest.find('&');
+    const std::string_view pair = rest.substr(0, amp);
+    const auto eq = pair.find('=');
+    if (pair.substr(0, eq) == key) {
+      if (eq == std::string_view::npos) return {};
+      auto decoded = url_decode(pair.substr(eq + 1));
+      return decoded ? *decoded : std::string{};
+    }
+    if (amp == std::string_view::npos) break;
+    rest = rest.substr(amp + 1);
+  }
+  return {};
+}
 
 HttpSession::HttpSession(net::ip::tcp::socket&& socket, const HttpContext& context)
     : stream_(std::move(socket)), context_(context) {}
@@ -77,23 +98,19 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   http::request<http::string_body> req = parser_->release();
   const std::string_view path = path_of(sv(req.target()));
 
-  if (beast::websocket::is_upgrade(req)) {
-    if (path != "/ws") return send(text_response(req, http::status::not_found, "no such stream\n"));
-    if (static_cast<std::size_t>(context_.stats.clients.load()) >= context_.config.max_clients) {
-      ++context_.stats.refused_full;
-      return send(text_response(req, http::status::service_unavailable, "server full\n"));
-    }
-    stream_.expires_never();
-    std::make_shared<WebSocketSession>(std::move(stream_), context_.channel, context_.config,
-                                       context_.stats)
-        ->run(std::move(req));
-    return;
-  }
+  if (beast::websocket::is_upgrade(req)) return upgrade(std::move(req));
+  if (path.rfind("/control/", 0) == 0) return handle_control(req);
 
   if (req.method() != http::verb::get && req.method() != http::verb::head)
     return send(text_response(req, http::status::method_not_allowed, "GET or HEAD only\n"));
 
   if (path == "/healthz") return send(text_response(req, http::status::ok, "ok\n"));
+  if (path == "/metrics")
+    return send(text_response(req, http::status::ok, render_metrics(context_.stats, context_.channels),
+                              "text/plain; version=0.0.4"));
+  if (path == "/channels")
+    return send(text_response(req, http::status::ok, render_channels(context_.channels),
+                              "application/json"));
 
   auto file = context_.files.resolve(sv(req.target()));
   if (!file) {
@@ -121,6 +138,64 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   res.content_length(size);
   res.keep_alive(req.keep_alive());
   send(std::move(res));
+}
+
+void HttpSession::upgrade(http::request<http::string_body>&& req) {
+  const std::string_view path = path_of(sv(req.target()));
+  if (path != "/ws") return send(text_response(req, http::status::not_found, "no such stream\n"));
+  const auto& origins = context_.config.allowed_origins;
+  if (!origins.empty()) {
+    const std::string origin(sv(req[http::field::origin]));
+    if (std::find(origins.begin(), origins.end(), origin) == origins.end()) {
+      ++context_.stats.refused_origin;
+      return send(text_response(req, http::status::forbidden, "origin not allowed\n"));
+    }
+  }
+  if (static_cast<std::size_t>(context_.stats.clients.load()) >= context_.config.max_clients) {
+    ++context_.stats.refused_full;
+    return send(text_response(req, http::status::service_unavailable, "server full\n"));
+  }
+  const std::string name = query_param(sv(req.target()), "channel");
+  auto channel = name.empty() ? context_.channels.default_channel() : context_.channels.find(name);
+  if (!channel) return send(text_response(req, http::status::not_found, "no such channel\n"));
+  beast::error_code ec;
+  const auto peer = stream_.socket().remote_endpoint(ec);
+  if (ec) return;
+  auto ticket = context_.limiter->acquire(peer.address());
+  if (!ticket) {
+    ++context_.stats.refused_per_ip;
+    return send(text_response(req, http::status::too_many_requests, "too many connections from your address\n"));
+  }
+  stream_.expires_never();
+  std::make_shared<WebSocketSession>(std::move(stream_), std::move(channel), context_.config,
+                                     context_.stats, std::move(ticket))
+      ->run(std::move(req));
+}
+
+void HttpSession::handle_control(const http::request<http::string_body>& req) {
+  // Spectators are read-only: every control action needs the operator's token.
+  const std::string& token = context_.config.control_token;
+  if (token.empty() || !context_.control)
+    return send(text_response(req, http::status::forbidden, "control is disabled\n"));
+  if (req.method() != http::verb::post)
+    return send(text_response(req, http::status::method_not_allowed, "POST only\n"));
+  const std::string_view auth = sv(req[http::field::authorization]);
+  const std::string expected = "Bearer " + token;
+  // Compare in constant time: the token is a secret.
+  bool match = auth.size() == expected.size();
+  unsigned char diff = 0;
+  for (std::size_t i = 0; match && i < auth.size(); ++i)
+    diff |= static_cast<unsigned char>(auth[i] ^ expected[i]);
+  if (!match || diff != 0) {
+    log_event("control_refused", std::string(path_of(sv(req.target()))));
+    return send(text_response(req, http::status::unauthorized, "bad or missing token\n"));
+  }
+  const std::string action(path_of(sv(req.target())).substr(std::string_view("/control/").size()));
+  const std::string channel = query_param(sv(req.target()), "channel");
+  std::string message;
+  const bool ok = context_.control->control(action, channel, message);
+  log_event(ok ? "control" : "control_failed", action + " " + channel + ": " + message);
+  send(text_response(req, ok ? http::status::ok : http::status::bad_request, message + "\n"));
 }
 
 template <class Response>

@@ -7,21 +7,27 @@
 #include <memory>
 #include <optional>
 
+#include "server/relay/channel_registry.hpp"
+#include "server/relay/connection_limiter.hpp"
+#include "server/relay/control_handler.hpp"
 #include "server/relay/relay_config.hpp"
 #include "server/relay/relay_stats.hpp"
 #include "server/relay/static_files.hpp"
 
 namespace mc::relay {
 
-class Channel;
-
 // What an HTTP session needs from the server it belongs to.
 struct HttpContext {
   const RelayConfig& config;
   RelayStats& stats;
   const StaticFiles& files;
-  std::shared_ptr<Channel> channel;  // the one game on /ws
+  ChannelRegistry& channels;             // /ws?channel=NAME
+  std::shared_ptr<ConnectionLimiter> limiter;
+  ControlHandler* control = nullptr;     // /control/...; nullptr = none
 };
+
+// The value of `key` in a target's query string ("/ws?channel=a&x=1"), or "".
+std::string query_param(std::string_view target, std::string_view key);
 
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
@@ -32,6 +38,8 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void do_read();
   void on_read(boost::beast::error_code ec, std::size_t bytes);
   void on_write(bool keep_alive, boost::beast::error_code ec, std::size_t bytes);
+  void upgrade(boost::beast::http::request<boost::beast::http::string_body>&& req);
+  void handle_control(const boost::beast::http::request<boost::beast::http::string_body>& req);
   template <class Response>
   void send(Response&& res);
 

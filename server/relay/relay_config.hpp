@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace mc::relay {
 
@@ -31,6 +32,16 @@ struct RelayConfig {
   std::size_t max_inbound_message = 4096;
   std::size_t max_http_body = 8192;
   std::size_t max_clients = 20000;
+  // Connections one client address may hold (0 = no limit). A household
+  // behind one NAT has a few spectators, not hundreds.
+  std::size_t max_connections_per_ip = 64;
+
+  // If not empty, a WebSocket upgrade must carry one of these Origin
+  // headers ("https://example.org"); others get 403. Empty = any origin.
+  std::vector<std::string> allowed_origins;
+  // Bearer token for the control endpoints (/control/...). Empty = control
+  // disabled: spectators are read-only either way.
+  std::string control_token;
 };
 
 }  // namespace mc::relay

@@ -8,10 +8,13 @@ namespace net = boost::asio;
 
 namespace mc::relay {
 
-RelayServer::RelayServer(RelayConfig config, std::shared_ptr<Channel> channel)
+RelayServer::RelayServer(RelayConfig config, std::shared_ptr<ChannelRegistry> channels,
+                         ControlHandler* control)
     : config_(std::move(config)),
       files_(config_.web_root),
-      context_{config_, stats_, files_, std::move(channel)},
+      channels_(std::move(channels)),
+      context_{config_, stats_, files_, *channels_,
+               std::make_shared<ConnectionLimiter>(config_.max_connections_per_ip), control},
       ioc_(config_.threads ? static_cast<int>(config_.threads)
                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {}
 
@@ -34,9 +37,13 @@ bool RelayServer::start(std::string& error) {
 
 std::uint16_t RelayServer::port() const { return listener_ ? listener_->port() : 0; }
 
-void RelayServer::stop() {
+void RelayServer::stop(std::chrono::milliseconds grace) {
   if (threads_.empty()) return;
   listener_->close();
+  for (const auto& ch : channels_->all()) ch->shutdown_subscribers();
+  const auto deadline = std::chrono::steady_clock::now() + grace;
+  while (stats_.clients.load() > 0 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ioc_.stop();
   for (auto& t : threads_) t.join();
   threads_.clear();

@@ -8,7 +8,10 @@
 #include <thread>
 #include <vector>
 
-#include "server/relay/channel.hpp"
+#include <chrono>
+
+#include "server/relay/channel_registry.hpp"
+#include "server/relay/connection_limiter.hpp"
 #include "server/relay/http_session.hpp"
 #include "server/relay/relay_config.hpp"
 #include "server/relay/relay_stats.hpp"
@@ -20,7 +23,9 @@ class Listener;
 
 class RelayServer {
  public:
-  RelayServer(RelayConfig config, std::shared_ptr<Channel> channel);
+  // `control` may be nullptr (no control endpoints); it must outlive the server.
+  RelayServer(RelayConfig config, std::shared_ptr<ChannelRegistry> channels,
+              ControlHandler* control = nullptr);
   ~RelayServer();
   RelayServer(const RelayServer&) = delete;
   RelayServer& operator=(const RelayServer&) = delete;
@@ -29,8 +34,10 @@ class RelayServer {
   bool start(std::string& error);
   // The bound port (useful with port 0).
   std::uint16_t port() const;
-  // Stops accepting, ends the I/O loop and joins the threads.
-  void stop();
+  // Graceful stop: stops accepting, sends every spectator a close frame
+  // ("going away"), waits up to `grace` for them to go, then ends the I/O
+  // loop and joins the threads.
+  void stop(std::chrono::milliseconds grace = std::chrono::milliseconds(2000));
 
   const RelayStats& stats() const { return stats_; }
 
@@ -38,6 +45,7 @@ class RelayServer {
   RelayConfig config_;
   RelayStats stats_;
   StaticFiles files_;
+  std::shared_ptr<ChannelRegistry> channels_;
   HttpContext context_;
   boost::asio::io_context ioc_;
   std::shared_ptr<Listener> listener_;

@@ -17,11 +17,13 @@ constexpr int kMaxInboundPerSecond = 20;
 }  // namespace
 
 WebSocketSession::WebSocketSession(beast::tcp_stream&& stream, std::shared_ptr<Channel> channel,
-                                   const RelayConfig& config, RelayStats& stats)
+                                   const RelayConfig& config, RelayStats& stats,
+                                   std::unique_ptr<ConnectionLimiter::Ticket> ticket)
     : ws_(std::move(stream)),
       channel_(std::move(channel)),
       config_(config),
       stats_(stats),
+      ticket_(std::move(ticket)),
       queue_(config.max_queue_bytes),
       stall_timer_(ws_.get_executor()) {
   ++stats_.clients;
@@ -30,7 +32,26 @@ WebSocketSession::WebSocketSession(beast::tcp_stream&& stream, std::shared_ptr<C
 
 WebSocketSession::~WebSocketSession() {
   --stats_.clients;
+  stats_.queued_bytes -= accounted_queue_bytes_;
   stats_.frames_dropped += queue_.dropped();
+}
+
+void WebSocketSession::account_queue() {
+  const auto now = static_cast<std::int64_t>(queue_.bytes());
+  stats_.queued_bytes += now - accounted_queue_bytes_;
+  accounted_queue_bytes_ = now;
+}
+
+void WebSocketSession::end_session() {
+  open_ = false;
+  channel_->leave(this);
+  stall_timer_.cancel();
+}
+
+void WebSocketSession::shutdown() {
+  net::post(ws_.get_executor(), [self = shared_from_this()] {
+    self->close_with(websocket::close_code::going_away, "server shutting down");
+  });
 }
 
 void WebSocketSession::run(beast::http::request<beast::http::string_body> req) {
@@ -61,9 +82,7 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t) {
     // Closed by the peer, timed out, or a protocol violation (including a
     // message over read_message_max): the session ends.
     if (ec == websocket::error::message_too_big) ++stats_.inbound_rejected;
-    open_ = false;
-    channel_->leave(this);
-    stall_timer_.cancel();
+    end_session();
     return;
   }
   in_.consume(in_.size());
@@ -88,15 +107,24 @@ void WebSocketSession::deliver(const Message& m) {
 void WebSocketSession::enqueue(Message m) {
   if (!open_ || closing_) return;
   queue_.push(std::move(m));
+  account_queue();
   if (!writing_) write_next();
 }
 
 void WebSocketSession::write_next() {
+  if (closing_ || !open_) {
+    // A close frame is queued behind the write that just ended, or the
+    // session is over: nothing more goes out.
+    writing_ = false;
+    stall_timer_.cancel();
+    return;
+  }
   if (batch_pos_ >= batch_.size()) {
     batch_.clear();
     batch_pos_ = 0;
     // Everything that queued during the last write goes out as one batch.
     queue_.take_all(batch_);
+    account_queue();
     if (batch_.empty()) {
       writing_ = false;
       stall_timer_.cancel();
@@ -115,14 +143,17 @@ void WebSocketSession::write_next() {
 
 void WebSocketSession::on_write(beast::error_code ec, std::size_t bytes) {
   if (ec) {
-    open_ = false;
     writing_ = false;
-    channel_->leave(this);
-    stall_timer_.cancel();
+    end_session();
     return;
   }
   ++stats_.messages_sent;
   stats_.bytes_sent += bytes;
+  const Message& sent = batch_[batch_pos_];
+  if (sent.binary())
+    stats_.record_delay(std::chrono::duration<double, std::milli>(
+                            std::chrono::steady_clock::now() - sent.published)
+                            .count());
   ++batch_pos_;
   write_next();
 }
@@ -134,17 +165,15 @@ void WebSocketSession::on_stall_timer(beast::error_code ec) {
   // either; drop the connection and free its queue.
   ++stats_.closed_slow;
   log_event("ws_closed_stalled", channel_->name());
-  open_ = false;
-  channel_->leave(this);
+  end_session();
   beast::error_code ignored;
   beast::get_lowest_layer(ws_).socket().close(ignored);
 }
 
 void WebSocketSession::close_with(websocket::close_code code, const char* reason) {
-  if (closing_) return;
+  if (closing_ || !open_) return;
   closing_ = true;
-  open_ = false;
-  channel_->leave(this);
+  end_session();
   ws_.async_close(websocket::close_reason(code, reason),
                   [self = shared_from_this()](beast::error_code) {});
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "server/relay/channel.hpp"
+#include "server/relay/connection_limiter.hpp"
 #include "server/relay/relay_config.hpp"
 #include "server/relay/relay_stats.hpp"
 #include "server/relay/send_queue.hpp"
@@ -22,8 +23,11 @@ namespace mc::relay {
 class WebSocketSession : public Subscriber,
                          public std::enable_shared_from_this<WebSocketSession> {
  public:
+  // `ticket` holds this client's per-address connection slot for the
+  // session's lifetime.
   WebSocketSession(boost::beast::tcp_stream&& stream, std::shared_ptr<Channel> channel,
-                   const RelayConfig& config, RelayStats& stats);
+                   const RelayConfig& config, RelayStats& stats,
+                   std::unique_ptr<ConnectionLimiter::Ticket> ticket);
   ~WebSocketSession() override;
 
   // Completes the upgrade for `req` and starts the session.
@@ -31,6 +35,8 @@ class WebSocketSession : public Subscriber,
 
   // Subscriber: called from the publisher's thread.
   void deliver(const Message& m) override;
+  // Graceful stop: a close frame with "going away".
+  void shutdown() override;
 
  private:
   void on_accept(boost::beast::error_code ec);
@@ -41,11 +47,15 @@ class WebSocketSession : public Subscriber,
   void on_write(boost::beast::error_code ec, std::size_t bytes);
   void on_stall_timer(boost::beast::error_code ec);
   void close_with(boost::beast::websocket::close_code code, const char* reason);
+  void end_session();
+  void account_queue();
 
   boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
   std::shared_ptr<Channel> channel_;
   const RelayConfig& config_;
   RelayStats& stats_;
+  std::unique_ptr<ConnectionLimiter::Ticket> ticket_;
+  std::int64_t accounted_queue_bytes_ = 0;  // this session's share of stats_.queued_bytes
   boost::beast::flat_buffer in_;
   SendQueue queue_;
   std::vector<Message> batch_;  // the write in flight and the rest of its batch

@@ -66,7 +66,9 @@ TEST(LogFeed, PublishesDecodableContinuousFramesOfTheRealGame) {
   for (const auto& m : frames) {
     ASSERT_TRUE(m.binary());
     ASSERT_TRUE(decoder.decode(*m.bytes, f, error)) << error;
-    if (have) ASSERT_EQ(f.seq, last_seq + 1) << "gap in the stream";
+    if (have) {
+      ASSERT_EQ(f.seq, last_seq + 1) << "gap in the stream";
+    }
     if (!have) start = f;
     last_seq = f.seq;
     have = true;

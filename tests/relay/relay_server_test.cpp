@@ -2,6 +2,8 @@
 // client that never slows the others, inbound limits, static files over HTTP.
 #include "server/relay/relay_server.hpp"
 
+#include "server/relay/http_session.hpp"
+
 #include <gtest/gtest.h>
 
 #include <boost/asio/connect.hpp>
@@ -37,7 +39,8 @@ class RelayServerTest : public ::testing::Test {
     config_.port = 0;
     config_.web_root = web_.string();
     config_.threads = 2;
-    channel_ = std::make_shared<Channel>("live");
+    channels_ = std::make_shared<ChannelRegistry>();
+    channel_ = channels_->open("live");
     channel_->set_hello(R"({"type":"hello"})");
   }
   void TearDown() override {
@@ -46,22 +49,24 @@ class RelayServerTest : public ::testing::Test {
     fs::remove(web_.parent_path() / ("mc-relay-secret-" + std::to_string(::getpid())));
   }
   void start() {
-    server_ = std::make_unique<RelayServer>(config_, channel_);
+    server_ = std::make_unique<RelayServer>(config_, channels_, control_);
     std::string error;
     ASSERT_TRUE(server_->start(error)) << error;
     ASSERT_NE(server_->port(), 0);
   }
   void wait_for_subscribers(std::size_t n) {
-    for (int i = 0; i < 500 && channel_->subscribers() < n; ++i)
+    for (int i = 0; i < 500 && channel_->subscribers() != n; ++i)
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     ASSERT_EQ(channel_->subscribers(), n);
   }
-  http::response<http::string_body> get(const std::string& target) {
+  http::response<http::string_body> get(const std::string& target, http::verb verb = http::verb::get,
+                                        const std::string& authorization = "") {
     boost::asio::io_context ioc;
     boost::asio::ip::tcp::socket s(ioc);
     s.connect({boost::asio::ip::make_address("127.0.0.1"), server_->port()});
-    http::request<http::empty_body> req{http::verb::get, target, 11};
+    http::request<http::empty_body> req{verb, target, 11};
     req.set(http::field::host, "127.0.0.1");
+    if (!authorization.empty()) req.set(http::field::authorization, authorization);
     http::write(s, req);
     boost::beast::flat_buffer buf;
     http::response<http::string_body> res;
@@ -71,7 +76,9 @@ class RelayServerTest : public ::testing::Test {
 
   fs::path web_;
   RelayConfig config_;
+  std::shared_ptr<ChannelRegistry> channels_;
   std::shared_ptr<Channel> channel_;
+  ControlHandler* control_ = nullptr;
   std::unique_ptr<RelayServer> server_;
 };
 
@@ -184,6 +191,132 @@ TEST_F(RelayServerTest, ClientLimitRefusesTheExtraConnection) {
   wait_for_subscribers(2);
   EXPECT_THROW(WsTestClient c(server_->port()), boost::system::system_error);
   EXPECT_EQ(server_->stats().refused_full.load(), 1u);
+}
+
+TEST_F(RelayServerTest, ChannelsAreChosenByQueryAndListed) {
+  auto second = channels_->open("second");
+  second->set_hello(R"({"type":"hello","game":2})");
+  start();
+  WsTestClient a(server_->port(), "/ws?channel=second");
+  EXPECT_EQ(a.read().data, R"({"type":"hello","game":2})");
+  WsTestClient b(server_->port(), "/ws");
+  EXPECT_EQ(b.read().data, R"({"type":"hello"})");
+  EXPECT_THROW(WsTestClient c(server_->port(), "/ws?channel=nope"), boost::system::system_error);
+  wait_for_subscribers(1);
+  auto list = get("/channels");
+  EXPECT_EQ(list.result(), http::status::ok);
+  EXPECT_NE(list.body().find("\"name\":\"second\""), std::string::npos) << list.body();
+  EXPECT_NE(list.body().find("\"name\":\"live\""), std::string::npos) << list.body();
+}
+
+TEST_F(RelayServerTest, MetricsExposeClientsFramesAndDelay) {
+  start();
+  WsTestClient c(server_->port());
+  c.read();
+  wait_for_subscribers(1);
+  channel_->publish_frame(frame_bytes(0, true), true);
+  c.read();
+  // The write's completion is counted just after the client sees the bytes.
+  for (int i = 0; i < 100 && server_->stats().delay_count.load() == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  auto m = get("/metrics");
+  EXPECT_EQ(m.result(), http::status::ok);
+  const std::string& body = m.body();
+  EXPECT_NE(body.find("matchcast_clients 1\n"), std::string::npos) << body;
+  EXPECT_NE(body.find("matchcast_channel_frames_total{channel=\"live\"} 1\n"), std::string::npos) << body;
+  EXPECT_NE(body.find("matchcast_frame_delay_ms_count 1\n"), std::string::npos) << body;
+  EXPECT_NE(body.find("# TYPE matchcast_frame_delay_ms histogram"), std::string::npos);
+}
+
+TEST_F(RelayServerTest, PerAddressLimitRefusesTheExtraConnection) {
+  config_.max_connections_per_ip = 2;
+  start();
+  WsTestClient a(server_->port()), b(server_->port());
+  wait_for_subscribers(2);
+  EXPECT_THROW(WsTestClient c(server_->port()), boost::system::system_error);
+  EXPECT_EQ(server_->stats().refused_per_ip.load(), 1u);
+  // A slot frees when a spectator leaves.
+  a.stream().close(boost::beast::websocket::close_code::normal);
+  wait_for_subscribers(1);
+  for (int i = 0; i < 100 && server_->stats().clients.load() > 1; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_NO_THROW(WsTestClient d(server_->port()));
+}
+
+TEST_F(RelayServerTest, OriginAllowListRefusesOtherOrigins) {
+  config_.allowed_origins = {"https://good.example"};
+  start();
+  auto with_origin = [&](const std::string& origin) {
+    boost::asio::io_context ioc;
+    boost::beast::websocket::stream<boost::asio::ip::tcp::socket> ws(ioc);
+    ws.next_layer().connect({boost::asio::ip::make_address("127.0.0.1"), server_->port()});
+    ws.set_option(boost::beast::websocket::stream_base::decorator(
+        [origin](boost::beast::websocket::request_type& r) { r.set(http::field::origin, origin); }));
+    ws.handshake("127.0.0.1", "/ws");
+  };
+  EXPECT_NO_THROW(with_origin("https://good.example"));
+  EXPECT_THROW(with_origin("https://evil.example"), boost::system::system_error);
+  EXPECT_EQ(server_->stats().refused_origin.load(), 1u);
+}
+
+TEST_F(RelayServerTest, ShutdownSendsEverySpectatorACloseFrame) {
+  start();
+  WsTestClient a(server_->port()), b(server_->port());
+  a.read();
+  b.read();
+  wait_for_subscribers(2);
+  server_->stop();
+  for (auto* c : {&a, &b}) {
+    try {
+      c->read();
+      FAIL() << "expected a close";
+    } catch (const boost::system::system_error& e) {
+      EXPECT_EQ(e.code(), boost::beast::websocket::error::closed);
+      EXPECT_EQ(c->stream().reason().code, boost::beast::websocket::close_code::going_away);
+    }
+  }
+}
+
+struct RecordingControl : ControlHandler {
+  std::vector<std::string> calls;
+  bool control(const std::string& action, const std::string& channel, std::string& message) override {
+    calls.push_back(action + "@" + channel);
+    message = "done";
+    return true;
+  }
+};
+
+TEST_F(RelayServerTest, ControlNeedsTheTokenAndPost) {
+  RecordingControl handler;
+  control_ = &handler;
+  config_.control_token = "s3cret";
+  start();
+  EXPECT_EQ(get("/control/feed/stop?channel=live", http::verb::post).result(), http::status::unauthorized);
+  EXPECT_EQ(get("/control/feed/stop?channel=live", http::verb::post, "Bearer wrong!").result(),
+            http::status::unauthorized);
+  EXPECT_EQ(get("/control/feed/stop?channel=live", http::verb::get, "Bearer s3cret").result(),
+            http::status::method_not_allowed);
+  EXPECT_TRUE(handler.calls.empty());
+  EXPECT_EQ(get("/control/feed/stop?channel=live", http::verb::post, "Bearer s3cret").result(), http::status::ok);
+  ASSERT_EQ(handler.calls.size(), 1u);
+  EXPECT_EQ(handler.calls[0], "feed/stop@live");
+}
+
+TEST_F(RelayServerTest, ControlIsDisabledWithoutAToken) {
+  RecordingControl handler;
+  control_ = &handler;
+  start();
+  EXPECT_EQ(get("/control/feed/stop?channel=live", http::verb::post, "Bearer ").result(), http::status::forbidden);
+  EXPECT_TRUE(handler.calls.empty());
+}
+
+TEST(QueryParam, FindsDecodesAndMisses) {
+  EXPECT_EQ(query_param("/ws?channel=a%20b&x=1", "channel"), "a b");
+  EXPECT_EQ(query_param("/ws?x=1&channel=c", "channel"), "c");
+  EXPECT_EQ(query_param("/ws?channelx=1", "channel"), "");
+  EXPECT_EQ(query_param("/ws", "channel"), "");
+  EXPECT_EQ(query_param("/ws?channel", "channel"), "");
+  EXPECT_EQ(query_param("/ws?channel=%zz", "channel"), "");
 }
 
 }  // namespace
