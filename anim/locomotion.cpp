@@ -53,8 +53,9 @@ void take_over_feet(LocomotionState& s, const float x[2], const float y[2], cons
                     const bool planted[2]) {
   for (int i = 0; i < 2; ++i) {
     FootState& f = s.feet[i];
-    f.x = f.from_x = f.to_x = x[i];
-    f.y = f.from_y = f.to_y = y[i];
+    f.x = f.from_x = x[i];
+    f.y = f.from_y = y[i];
+    BodyFrame(s.x, s.y, s.heading).to_body(f.x, f.y, f.rel_x, f.rel_z);
     f.yaw = f.from_yaw = yaw[i];
     f.lift = 0;
     if (planted[i] && !f.planted) { f.planted_frames = 0; f.stance_phase = 0; }
@@ -174,10 +175,13 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
       f.from_x = f.x; f.from_y = f.y; f.from_yaw = f.yaw;
       f.progress = std::max(0.0f, f.stance_phase + dphase - beta) / (1.0f - beta);
       f.progress = std::min(f.progress, 0.3f);
-      f.to_x = f.x; f.to_y = f.y;
-      f.since_landing = std::max(f.since_landing, 0);
+      body.to_body(f.x, f.y, f.rel_x, f.rel_z);
     } else if (!f.planted) {
-      f.progress += dphase / (1.0f - beta);
+      // Two feet in the air close together in their swings drift apart: the
+      // one behind slows, so that running steps alternate.
+      const FootState& o = s.feet[1 - i];
+      const bool crowded = !o.planted && o.progress > f.progress && o.progress - f.progress < 0.45f;
+      f.progress += dphase / (1.0f - beta) * (crowded ? 0.5f : 1.0f);
     }
     if (f.planted) {
       ++f.planted_frames;
@@ -185,45 +189,40 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
       continue;
     }
     const float p = std::min(f.progress, 1.0f);
-    // Landing spot: where the hip will be at touch-down, plus half a stance ahead.
-    const float travel = (1.0f - p) * (1.0f - beta) * cycle * moving;
+    // The swing is planned relative to the moving body: from where the foot
+    // left the grass (body space, at lift-off) to half a stance ahead of the
+    // hip, along the direction of travel. So the foot passes under the body
+    // mid-swing, whatever the 2D player does meanwhile.
+    float ubx, ubz;
+    body.dir_to_body(ux, uy, ubx, ubz);
     const float ahead = 0.5f * beta * cycle * moving;
-    float tx, ty;
-    body.to_field(0.0f, kSide[i] * prm.foot_spacing, tx, ty);
-    tx += ux * (travel + ahead);
-    ty += uy * (travel + ahead);
+    float tbx = ubx * ahead, tbz = kSide[i] * prm.foot_spacing + ubz * ahead;
     // Legs never cross: keep the landing spot on this foot's side of the other foot.
     const FootState& o = s.feet[1 - i];
-    float obx, obz, tbx, tbz;
+    float obx, obz;
     body.to_body(o.x, o.y, obx, obz);
-    body.to_body(tx, ty, tbx, tbz);
     if (kSide[i] * (tbz - obz) < 0.14f) tbz = obz + kSide[i] * 0.14f;
-    // Land where the hip can still reach after a change of direction:
-    // within 0.5 m of the hip's spot at touch-down.
-    float hx, hz;
-    body.dir_to_body(ux * travel, uy * travel, hx, hz);
-    hz += kSide[i] * dims::kHipHalfWidth;
-    const float off = std::hypot(tbx - hx, tbz - hz);
+    // Within a comfortable reach of the hip.
+    const float hz = kSide[i] * dims::kHipHalfWidth;
+    const float off = std::hypot(tbx, tbz - hz);
     if (off > 0.5f) {
-      tbx = hx + (tbx - hx) * 0.5f / off;
+      tbx *= 0.5f / off;
       tbz = hz + (tbz - hz) * 0.5f / off;
     }
-    body.to_field(tbx, tbz, tx, ty);
-    // The aim moves at most 0.15 m per frame more than the body: a sudden stop or reversal of
-    // the 2D player bends the swing instead of throwing the foot.
-    if (p <= 0.3f && f.to_x == f.from_x && f.to_y == f.from_y) { f.to_x = tx; f.to_y = ty; }
-    const float ax = tx - f.to_x, ay = ty - f.to_y, am = std::hypot(ax, ay);
-    const float reach = 0.15f + 1.5f * ds;
-    const float step = am > reach ? reach / am : 1.0f;
-    f.to_x += ax * step;
-    f.to_y += ay * step;
-    tx = f.to_x;
-    ty = f.to_y;
     const float w = smoothstep(p);
-    f.x = f.from_x + (tx - f.from_x) * w;
-    f.y = f.from_y + (ty - f.from_y) * w;
+    float rx = f.rel_x + (tbx - f.rel_x) * w;
+    const float rz = f.rel_z + (tbz - f.rel_z) * w;
+    if (run > 0) {
+      // Running: the heel first rises behind the body, then the knee drives
+      // the foot forward to its spot.
+      const float back = std::min(f.rel_x, -0.3f);
+      const float run_x = p < 0.3f ? f.rel_x + (back - f.rel_x) * smoothstep(p / 0.3f)
+                                   : back + (tbx - back) * smoothstep((p - 0.3f) / 0.7f);
+      rx += (run_x - rx) * run;
+    }
+    body.to_field(rx, rz, f.x, f.y);
     f.yaw = lerp_deg(f.from_yaw, in.heading, w);
-    f.lift = (0.07f + 0.12f * run) * std::sin(kPi * p) * std::max(moving, 0.5f);
+    f.lift = (0.07f + 0.2f * run) * std::sin(kPi * p) * std::max(moving, 0.5f);
     // Touch-down, unless this foot landed too recently for a human cadence:
     // then it hovers a frame longer just above its spot.
     const int min_frames = static_cast<int>(std::ceil(2.0f / (prm.hard_cadence_cap * dt) - 1e-3f));
@@ -250,7 +249,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
   SampleGaitJob sample{gait_keys(), s.posture_m, &out.sample, nullptr, nullptr};
   sample.Run();
   const float amp = clampf(s.speed / 1.5f, 0.0f, 1.0f) * (in.rest ? 0.3f : 1.0f);
-  float pelvis = kStandPelvis - 0.06f * run * stride_factor - 0.04f * amp +
+  float pelvis = kStandPelvis - 0.03f * run * stride_factor - 0.02f * amp +
                  amp * (0.012f * (1.0f - run) * out.sample.bob_walk + 0.03f * run * out.sample.bob_run);
   for (int i = 0; i < 2; ++i) {
     const FootState& f = s.feet[i];

@@ -36,7 +36,7 @@ struct FootState {
   float stance_phase = 0;         // cycle fraction covered since touch-down
   int since_landing = 100;        // frames since the previous touch-down
   bool release = false;           // set by the caller: lift this planted foot now (joint speed limit)
-  float to_x = 0, to_y = 0;       // landing spot being aimed at, field m (moves at a bounded speed)
+  float rel_x = 0, rel_z = 0;     // where the swing began, body space at lift-off (forward, right; m)
 };
 
 // Per-player state carried from frame to frame (the caller owns it, as an
