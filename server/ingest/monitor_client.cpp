@@ -9,12 +9,21 @@ namespace {
 constexpr std::size_t kRecvBuffer = 65536;
 // Longest single wait, so stop() is noticed promptly.
 constexpr std::chrono::milliseconds kSlice{50};
+// Kernel receive buffer: a synch-mode server sends shows as fast as it
+// runs; ~300 shows of slack ride out a stalled consumer.
+constexpr int kSocketBuffer = 1 << 20;
+
+bool open_socket(UdpSocket& s) {
+  if (!s.open(UdpEndpoint{0, 0})) return false;
+  s.set_receive_buffer(kSocketBuffer);  // best effort
+  return true;
+}
 }  // namespace
 
 MonitorClient::MonitorClient(MonitorClientConfig config)
     : config_(std::move(config)), buf_(kRecvBuffer), backoff_(config_.backoff_initial) {
   if (!resolve_ipv4(config_.host, config_.port, init_addr_, error_)) return;
-  if (!socket_.open(UdpEndpoint{0, 0})) {
+  if (!open_socket(socket_)) {
     error_ = socket_.error();
     return;
   }
@@ -54,7 +63,7 @@ void MonitorClient::check_timers() {
     // monitor would refuse a second (dispinit) from it
     // ("only_init_allowed_on_init_port").
     UdpSocket fresh;
-    if (fresh.open(UdpEndpoint{0, 0})) socket_ = std::move(fresh);
+    if (open_socket(fresh)) socket_ = std::move(fresh);
     stream_.push_event(SourceEvent::Kind::FeedLost,
                        "no datagram from " + server_.str() + " for " +
                            std::to_string(config_.lost_after.count()) + " ms; reconnecting");

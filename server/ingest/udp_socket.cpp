@@ -103,6 +103,10 @@ bool UdpSocket::send_to(const UdpEndpoint& to, std::string_view bytes) {
   return true;
 }
 
+bool UdpSocket::set_receive_buffer(int bytes) {
+  return ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &bytes, sizeof bytes) == 0;
+}
+
 bool UdpSocket::connect(const UdpEndpoint& peer) {
   const sockaddr_in a = to_sockaddr(peer);
   if (::connect(fd_, reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0) {

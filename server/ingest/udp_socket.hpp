@@ -40,6 +40,10 @@ class UdpSocket {
   // earlier ICMP error).
   bool send_to(const UdpEndpoint& to, std::string_view bytes);
 
+  // Asks the kernel for a receive buffer of `bytes` (capped by
+  // net.core.rmem_max); false if refused.
+  bool set_receive_buffer(int bytes);
+
   // Fixes the peer: later send() goes there, only its datagrams arrive, and
   // an ICMP "port unreachable" shows up as an error on a later call.
   bool connect(const UdpEndpoint& peer);
