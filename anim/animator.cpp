@@ -198,8 +198,16 @@ void Animator::plan_actions(std::uint64_t pos, int slot) {
     const float tackle_s = static_cast<float>(params_.server.number("tackle_cycles", 10) * step_s);
     m.follow_s = m.kind == MotionKind::Tackle ? tackle_s : 0.2f;
     m.end_s = m.kind == MotionKind::Tackle ? tackle_s + 0.3f : m.kind == MotionKind::Catch ? 0.5f : 0.9f;
-    ctx.motion = m;
-    ctx.motion_active = true;
+    // A kick whose contact is still to come is not cut short: this action
+    // waits for it (the contact frame and its Kick event come first).
+    const double now = static_cast<double>(pos) * step_s;
+    if (ctx.motion_active && ctx.motion.kind == MotionKind::Kick && ctx.motion.contact_time_s >= now) {
+      ctx.next_motion = m;
+      ctx.next_pending = true;
+    } else {
+      ctx.motion = m;
+      ctx.motion_active = true;
+    }
   }
 }
 
@@ -289,7 +297,12 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       // The action playing at this frame, if any.
       ActionSample sample;
       const double now = (static_cast<double>(pos) + 0.5 * sub) * step_s;
-      if (in.reset) ctx.motion_active = false;  // a teleport cancels whatever was playing
+      if (in.reset) ctx.motion_active = ctx.next_pending = false;  // a teleport cancels whatever was playing
+      if (ctx.next_pending && (!ctx.motion_active || now > ctx.motion.contact_time_s + 1e-6)) {
+        ctx.motion = ctx.next_motion;
+        ctx.motion_active = true;
+        ctx.next_pending = false;
+      }
       if (ctx.motion_active) {
         const float tau = static_cast<float>(now - ctx.motion.contact_time_s);
         if (tau > ctx.motion.end_s + 1e-4f) ctx.motion_active = false;

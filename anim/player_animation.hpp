@@ -25,6 +25,10 @@ struct PlayerAnim {
   // The action playing or about to play (kick_planner.hpp), and its bookkeeping.
   ActionMotion motion;
   bool motion_active = false;
+  // An action planned while a kick still waits for its contact: it takes
+  // over once that contact has been shown.
+  ActionMotion next_motion;
+  bool next_pending = false;
   std::uint64_t last_action_pos = 0;  // stream position + 1 of the last action planned or merged
   std::uint64_t ball_contact_pos = 0;  // the ball waits on the half-way frame before this cycle
   bool kick_event_pending = false;    // a Kick event waits for its contact frame

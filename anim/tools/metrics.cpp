@@ -72,6 +72,23 @@ QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& st
   std::array<std::vector<double>, kMaxPlayers> landings;  // times (s) of touch-downs
   std::vector<glm::mat4> m;
   const int dofs = skel.dof_count();
+  // Strides (three touch-downs) of one player since its last teleport.
+  double fastest = 0;
+  auto flush_strides = [&](std::size_t p) {
+    auto& l = landings[p];
+    for (std::size_t i = 2; i < l.size(); ++i) {
+      if (l[i] - l[i - 2] >= 2.0) continue;
+      const double c = 2.0 / (l[i] - l[i - 2]);
+      r.cadence.values.push_back(c);
+      if (c > fastest) {
+        fastest = c;
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "seq %u, slot %zu", seq0 + static_cast<std::uint32_t>(std::lround(l[i] / 0.05)), p);
+        r.max_cadence_where = buf;
+      }
+    }
+    l.clear();
+  };
 
   for (std::size_t fi = 0; fi < frames.size(); ++fi) {
     const PoseFrame& f = frames[fi];
@@ -155,28 +172,13 @@ QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& st
           s.on = false;
         }
       }
-      if (pi.reset) landings[p].clear();  // no stride spans a teleport
+      if (pi.reset) flush_strides(p);  // no stride spans a teleport
     }
   }
   for (auto& ps : stance)
     for (auto& s : ps)
       if (s.on && s.frames >= 2) r.slide_m.values.push_back(s.worst);
-  double fastest = 0;
-  for (std::size_t p = 0; p < landings.size(); ++p) {
-    const auto& l = landings[p];
-    for (std::size_t i = 2; i < l.size(); ++i) {
-      if (l[i] - l[i - 2] >= 2.0) continue;
-      const double c = 2.0 / (l[i] - l[i - 2]);
-      r.cadence.values.push_back(c);
-      if (c > fastest) {
-        fastest = c;
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "seq %u, slot %zu", seq0 + static_cast<std::uint32_t>(std::lround(l[i] / 0.05)), p);
-        r.max_cadence_where = buf;
-      }
-    }
-  }
-
+  for (std::size_t p = 0; p < landings.size(); ++p) flush_strides(p);
   for (const AnimEvent& e : events) {
     if (e.type != AnimEventType::Kick || e.seq < seq0) continue;
     const std::size_t fi = e.seq - seq0;
@@ -189,6 +191,9 @@ QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& st
     const double d = std::sqrt((strike.x - b.x) * (strike.x - b.x) + (strike.y - b.y) * (strike.y - b.y) +
                                (strike.z - b.z) * (strike.z - b.z));
     r.contact_m.values.push_back(std::fabs(d - ball_r));
+    if (std::getenv("MATCHCAST_ANIM_CONTACTS") != nullptr && std::fabs(d - ball_r) > 0.1)
+      std::fprintf(stderr, "contact %.3f seq %u slot %zu foot %d ball %.2f %.2f root %.2f %.2f h %.0f\n", std::fabs(d - ball_r),
+                   e.seq, p, static_cast<int>(e.foot), b.x, b.y, pose.x, pose.y, pose.heading);
     ++r.kicks;
   }
   return r;
