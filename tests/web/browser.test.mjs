@@ -9,7 +9,7 @@ import { launchBrowser, openPage, shot, startServer, stats, waitFor } from './ha
 
 const CAMERAS = ['broadcast', 'orbit', 'free', 'player', 'follow', 'goal', 'top'];
 
-describe('web page against matchcast-server', { timeout: 240000 }, () => {
+describe('web page against matchcast-server', { timeout: 600000 }, () => {
   // One page at a time: software WebGL on a busy machine is slow, and the
   // pages of one browser share its GPU process.
   let server, browser, page, errors;

@@ -41,6 +41,7 @@ let overlays = null;
 let match = null;         // readHello() result
 let codec = null;
 let helloKey = '';
+let timeshiftKey = null;
 let selected = null;
 let view = null;          // the interpolated frame on screen
 const toggles = { labels: true, offside: false, reach: false, sound: true, stats: params.has('stats') };
@@ -120,7 +121,10 @@ function startStream() {
         if (!applyHello(msg)) return;
         try {
           codec = new Codec(mod, msg);
-          timeshift.reset(() => new Codec(mod, msg));
+          // A reconnect to the same match keeps the history; a new skeleton
+          // (or a stream that starts again, see TimeShift.record) does not.
+          if (timeshiftKey !== helloKey) timeshift.reset(() => new Codec(mod, msg));
+          timeshiftKey = helloKey;
           timeshift.frameMs = buffer.frameMs;
         } catch (e) {
           codec = null;
