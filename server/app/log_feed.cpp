@@ -1,10 +1,12 @@
 #include "server/app/log_feed.hpp"
 
 #include <chrono>
+#include <optional>
 #include <vector>
 
 #include "anim/animator.hpp"
 #include "anim/human_skeleton.hpp"
+#include "proto/control_messages.hpp"
 #include "proto/frame_codec.hpp"
 #include "proto/hello.hpp"
 #include "server/ingest/state_source.hpp"
@@ -36,6 +38,30 @@ std::string make_hello(const WorldState& first, const GameParams& params, int ke
   hello.right.color2 = "#ffffff";
   hello.match_id = match_id;
   return proto::to_json(hello);
+}
+
+// The wire form of an animator event, renumbered into the feed's sequence
+// (`shift` = new seq - animator seq; frames renumber the same way).
+std::optional<proto::ControlMessage> to_control(const anim::AnimEvent& e, std::int64_t shift) {
+  const auto seq = static_cast<std::uint32_t>(static_cast<std::int64_t>(e.seq) + shift);
+  switch (e.type) {
+    case anim::AnimEventType::Kick: {
+      proto::KickEvent k{seq, e.time, e.side, e.unum,
+                         e.foot == anim::Foot::Left ? proto::Foot::Left : proto::Foot::Right,
+                         static_cast<std::uint64_t>(static_cast<std::int64_t>(e.contact_time_ms) +
+                                                    shift * kFrameIntervalMs)};
+      return k;
+    }
+    case anim::AnimEventType::Goal:
+      return proto::GoalEvent{seq, e.time, e.side, e.score_left, e.score_right};
+    case anim::AnimEventType::PlayMode:
+      return proto::PlayModeEvent{seq, e.time, e.play_mode};
+    case anim::AnimEventType::Card:
+      if (e.card == anim::Card::None) return std::nullopt;
+      return proto::CardEvent{seq, e.time, e.side, e.unum,
+                              e.card == anim::Card::Red ? proto::CardColor::Red : proto::CardColor::Yellow};
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -99,6 +125,8 @@ bool LogFeed::play_once() {
   proto::FrameEncoder encoder(anim::human_skeleton(),
                               proto::EncoderOptions{config_.keyframe_interval});
   std::vector<PoseFrame> frames;
+  std::vector<anim::AnimEvent> events;
+  std::size_t next_event = 0;
   const auto interval = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double, std::milli>(kFrameIntervalMs / config_.speed));
   auto deadline = Clock::now();
@@ -110,7 +138,11 @@ bool LogFeed::play_once() {
       // catch up: resume at the normal pace from now.
       if (Clock::now() - deadline > std::chrono::seconds(1)) deadline = Clock::now();
       if (!wait_until(deadline)) return false;
-      // Sequence numbers continue across loops so that clients see no gap.
+      // Sequence numbers continue across loops so that clients see no gap;
+      // a frame's events go out just before it, renumbered the same way.
+      const std::int64_t shift = static_cast<std::int64_t>(next_seq_) - f.seq;
+      for (; next_event < events.size() && events[next_event].seq <= f.seq; ++next_event)
+        if (auto m = to_control(events[next_event], shift)) channel_->publish_control(proto::to_json(*m));
       f.seq = next_seq_++;
       f.server_time_ms = unix_ms();
       bool key = false;
@@ -119,14 +151,16 @@ bool LogFeed::play_once() {
       ++frames_;
     }
     batch.clear();
+    events.erase(events.begin(), events.begin() + static_cast<std::ptrdiff_t>(next_event));
+    next_event = 0;
     return true;
   };
 
   do {
-    animator.push(state, frames);
+    animator.push(state, frames, &events);
     if (!publish(frames)) return false;
   } while (source->next(state));
-  animator.finish(frames);
+  animator.finish(frames, &events);
   if (!publish(frames)) return false;
 
   const auto& stats = source->stats();

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "anim/human_skeleton.hpp"
+#include "proto/control_messages.hpp"
 #include "proto/frame_codec.hpp"
 #include "proto/hello.hpp"
 
@@ -63,8 +64,20 @@ TEST(LogFeed, PublishesDecodableContinuousFramesOfTheRealGame) {
   PoseFrame f, start;
   std::uint32_t last_seq = 0;
   bool have = false;
+  int kicks = 0;
   for (const auto& m : frames) {
-    ASSERT_TRUE(m.binary());
+    if (!m.binary()) {
+      // Events travel between frames and name a frame at or after the last one.
+      proto::ControlMessage c;
+      ASSERT_TRUE(proto::control_from_json(*m.bytes, c, error)) << error << ": " << *m.bytes;
+      if (auto* k = std::get_if<proto::KickEvent>(&c)) {
+        ++kicks;
+        EXPECT_GE(k->seq, have ? last_seq + 1 : 0u);
+        EXPECT_GE(k->unum, 1);
+        EXPECT_LE(k->unum, 11);
+      }
+      continue;
+    }
     ASSERT_TRUE(decoder.decode(*m.bytes, f, error)) << error;
     if (have) {
       ASSERT_EQ(f.seq, last_seq + 1) << "gap in the stream";
@@ -80,6 +93,7 @@ TEST(LogFeed, PublishesDecodableContinuousFramesOfTheRealGame) {
     if (std::hypot(f.players[i].x - start.players[i].x, f.players[i].y - start.players[i].y) > 0.5)
       ++moved;
   EXPECT_GE(moved, 5);
+  EXPECT_GE(kicks, 1) << "ten seconds of a real game without a kick event";
 }
 
 TEST(LogFeed, RefusesAMissingOrEmptyLogWithAClearError) {
