@@ -12,6 +12,18 @@
 // follow human_skeleton.hpp's placement convention: x, y in field metres, z
 // the pelvis height, heading in field degrees, angles per the skeleton.
 //
+// Per cycle and player: the classifier (classifier.hpp) decides what the
+// player does, smoothed over the neighbouring cycles; kicks, tackles, catches
+// and dives seen in the look-ahead are planned (kick_planner.hpp) so that a
+// kick's preparation starts before its contact; then every frame poses the
+// player (player_animation.hpp). Detail levels (AnimConfig::detail) switch
+// locomotion and actions off; events are reported at every level.
+//
+// Events: PlayMode, Goal and Card on the first frame of the cycle that shows
+// them; Kick on its contact frame (the half-way frame before the cycle whose
+// state carries the kick). event_messages.hpp turns them into the stream's
+// control messages.
+//
 // Memory: the constructor sizes every buffer; push() and finish() allocate
 // only when the caller's output vectors grow.
 #pragma once

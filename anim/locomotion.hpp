@@ -1,13 +1,21 @@
 // Locomotion of one player: the posture index of gait_table.hpp advanced by
 // the distance covered, cadence and stride from a smoothed speed, and feet
 // that stay planted on the grass (field space) while in stance, so that they
-// do not slide, then swing to where the body will be when they land.
+// do not slide. A swing is planned relative to the moving body: from where
+// the foot left the grass to half a stance ahead of the hip.
 //
 // Past the paper's limits: the player settles into a standstill with both
 // feet down (extra settling steps at a walking cadence, none once both feet
 // are under the hips), turns on the spot by stepping, and never exceeds a
 // human cadence: above the speed where cadence reaches its cap, the stride
-// grows instead.
+// grows instead, and a touch-down that would come too soon after the same
+// foot's previous one waits a frame (hard cap 4.5 steps/s).
+//
+// At running speed (over one_frame_stance_m per frame, about 3.8 m/s) a foot
+// stays down for one frame only: a planted leg sweeps v*dt/leg length per
+// frame, which past that speed would exceed the joint speed limit of
+// player_animation.hpp (a sprinter's 0.1 s contact is one or two frames at
+// 20 frames per second anyway).
 #pragma once
 
 #include "anim/gait_table.hpp"
@@ -20,7 +28,7 @@ struct LocomotionParams {
   float hard_cadence_cap = 4.5f;  // steps/s no foot ever exceeds: a touch-down waits (hovering) if needed
   float speed_halflife_s = 0.25f; // low-pass of the server's speed (anchors D.1: 0.2-0.3 s)
   float max_stance_travel = 0.8f; // m the body may cover over one planted foot
-  float one_frame_stance_m = 0.19f; // m per frame above which a foot is down for one frame only
+  float one_frame_stance_m = 0.19f; // m per frame (3.8 m/s) above which a foot is down for one frame only
   float settle_cadence = 2.0f;    // steps/s of the steps that bring the feet to rest
   float foot_spacing = 0.11f;     // m, ankle from the body's midline at rest
 };

@@ -1,6 +1,13 @@
 // One player's pose at one frame: locomotion (locomotion.hpp) for the legs
 // and the rhythm of the body, the head on the server's gaze, and an optional
 // action motion (kick, tackle, catch, dive; action_motion.hpp) layered over it.
+//
+// Smoothness outside actions and teleports: the heading turns at most
+// kMaxTurnPerFrameDeg and every joint (but the neck and head yaw, which follow
+// the server's neck angle) at most kMaxJointStepDeg per frame. Where that
+// limit holds a planted leg back, its foot is released (lifted from where it
+// is) rather than dragged, and a foot touching down where the limit let it
+// reach is held there.
 #pragma once
 
 #include <array>
