@@ -1,5 +1,6 @@
 #include "server/ingest/binary_records.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -159,39 +160,65 @@ bool decode_player_type(std::string_view bytes, PlayerType& t) {
   return true;
 }
 
+namespace {
+// Offsets in server_params_t (Int32 *65536 unless marked Int16).
+struct ParamField {
+  const char* name;
+  int offset;
+  bool int16;
+};
+constexpr ParamField kParamFields[] = {
+    {"goal_width", 0, false},        {"inertia_moment", 4, false},
+    {"player_size", 8, false},       {"player_decay", 12, false},
+    {"player_rand", 16, false},      {"player_weight", 20, false},
+    {"player_speed_max", 24, false}, {"player_accel_max", 28, false},
+    {"stamina_max", 32, false},      {"stamina_inc_max", 36, false},
+    {"kick_rand", 80, false},        {"ball_size", 104, false},
+    {"ball_decay", 108, false},      {"ball_rand", 112, false},
+    {"ball_weight", 116, false},     {"ball_speed_max", 120, false},
+    {"ball_accel_max", 124, false},  {"dash_power_rate", 128, false},
+    {"kick_power_rate", 132, false}, {"kickable_margin", 136, false},
+    {"control_radius", 140, false},  {"maxpower", 148, false},
+    {"minpower", 152, false},        {"maxmoment", 156, false},
+    {"minmoment", 160, false},       {"maxneckmoment", 164, false},
+    {"minneckmoment", 168, false},   {"maxneckang", 172, false},
+    {"minneckang", 176, false},      {"visible_angle", 180, false},
+    {"visible_distance", 184, false},{"catchable_area_l", 208, false},
+    {"catchable_area_w", 212, false},{"catch_probability", 216, false},
+    {"goalie_max_moves", 220, true}, {"ckick_margin", 224, false},
+    {"half_time", 254, true},        {"simulator_step", 256, true},
+    {"send_step", 258, true},        {"recv_step", 260, true},
+    {"sense_body_step", 262, true},  {"catch_ban_cycle", 274, true},
+};
+}  // namespace
+
 bool decode_server_params(std::string_view bytes, ParamTable& out) {
   if (bytes.size() < kServerParamsSize) return false;
   const char* p = bytes.data();
-  // Offsets in server_params_t (Int32 *65536 unless marked Int16).
-  struct Field { const char* name; int offset; bool int16; };
-  static constexpr Field kFields[] = {
-      {"goal_width", 0, false},        {"inertia_moment", 4, false},
-      {"player_size", 8, false},       {"player_decay", 12, false},
-      {"player_rand", 16, false},      {"player_weight", 20, false},
-      {"player_speed_max", 24, false}, {"player_accel_max", 28, false},
-      {"stamina_max", 32, false},      {"stamina_inc_max", 36, false},
-      {"kick_rand", 80, false},        {"ball_size", 104, false},
-      {"ball_decay", 108, false},      {"ball_rand", 112, false},
-      {"ball_weight", 116, false},     {"ball_speed_max", 120, false},
-      {"ball_accel_max", 124, false},  {"dash_power_rate", 128, false},
-      {"kick_power_rate", 132, false}, {"kickable_margin", 136, false},
-      {"control_radius", 140, false},  {"maxpower", 148, false},
-      {"minpower", 152, false},        {"maxmoment", 156, false},
-      {"minmoment", 160, false},       {"maxneckmoment", 164, false},
-      {"minneckmoment", 168, false},   {"maxneckang", 172, false},
-      {"minneckang", 176, false},      {"visible_angle", 180, false},
-      {"visible_distance", 184, false},{"catchable_area_l", 208, false},
-      {"catchable_area_w", 212, false},{"catch_probability", 216, false},
-      {"goalie_max_moves", 220, true}, {"ckick_margin", 224, false},
-      {"half_time", 254, true},        {"simulator_step", 256, true},
-      {"send_step", 258, true},        {"recv_step", 260, true},
-      {"sense_body_step", 262, true},  {"catch_ban_cycle", 274, true},
-  };
-  for (const Field& f : kFields) {
+  for (const ParamField& f : kParamFields) {
     const double v = f.int16 ? be16(p + f.offset) : fixed(p + f.offset);
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.10g", v);
     out.set(f.name, buf);
+  }
+  return true;
+}
+
+bool encode_server_params(const ParamTable& in, std::string& out) {
+  if (out.size() < kServerParamsSize) return false;
+  for (const ParamField& f : kParamFields) {
+    if (!in.has(f.name)) continue;
+    double v = in.number(f.name, 0) * (f.int16 ? 1.0 : kScale2);
+    if (!std::isfinite(v)) v = 0;
+    const double lo = f.int16 ? -32768.0 : -2147483648.0, hi = f.int16 ? 32767.0 : 2147483647.0;
+    const auto x = static_cast<std::int64_t>(std::llround(std::clamp(v, lo, hi)));
+    auto* d = reinterpret_cast<unsigned char*>(out.data() + f.offset);
+    if (f.int16) {
+      d[0] = static_cast<unsigned char>((x >> 8) & 0xff);
+      d[1] = static_cast<unsigned char>(x & 0xff);
+    } else {
+      for (int i = 0; i < 4; ++i) d[i] = static_cast<unsigned char>((x >> (24 - 8 * i)) & 0xff);
+    }
   }
   return true;
 }

@@ -51,6 +51,9 @@ bool decode_player_type(std::string_view bytes, PlayerType& out);
 // server_params_t: the fields a viewer uses, under their text names
 // (goal_width, ball_size, player_size, half_time, simulator_step, ...).
 bool decode_server_params(std::string_view bytes, ParamTable& out);
+// The inverse for the same fields: writes them into `out` (396 bytes,
+// other fields zero). False if `out` is too short.
+bool encode_server_params(const ParamTable& in, std::string& out);
 // msginfo_t (Int16 board + NUL-padded text).
 bool decode_msginfo(std::string_view bytes, int& board, std::string& text);
 

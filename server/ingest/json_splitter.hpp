@@ -31,6 +31,7 @@ class JsonSplitter {
   ByteSource& src_;
   std::size_t max_object_;
   std::vector<char> buf_;
+  std::size_t read_size_;  // bytes asked of the source per read
   std::size_t pos_ = 0, end_ = 0;  // unread bytes are buf_[pos_, end_)
   std::uint64_t base_ = 0;         // decoded offset of buf_[0]
   bool eof_ = false;

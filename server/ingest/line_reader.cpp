@@ -1,14 +1,18 @@
 #include "server/ingest/line_reader.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace mc::ingest {
 namespace {
-constexpr std::size_t kChunk = 1u << 20;
+// Reads start small (a datagram-sized input, a fuzz case) and double while
+// they fill the buffer, up to 1 MiB per read for whole game logs.
+constexpr std::size_t kFirstRead = 64u << 10;
+constexpr std::size_t kMaxRead = 1u << 20;
 }
 
 LineReader::LineReader(ByteSource& src, std::size_t max_line)
-    : src_(src), max_line_(max_line), buf_(2 * kChunk) {}
+    : src_(src), max_line_(max_line), buf_(kFirstRead), read_size_(kFirstRead) {}
 
 bool LineReader::fill() {
   if (eof_) return false;
@@ -19,12 +23,13 @@ bool LineReader::fill() {
     end_ -= begin_;
     begin_ = 0;
   }
-  if (buf_.size() - end_ < kChunk) buf_.resize(end_ + kChunk);
-  const std::size_t got = src_.read(buf_.data() + end_, buf_.size() - end_);
+  if (buf_.size() - end_ < read_size_) buf_.resize(end_ + read_size_);
+  const std::size_t got = src_.read(buf_.data() + end_, read_size_);
   if (got == 0) {
     eof_ = true;
     return false;
   }
+  if (got == read_size_) read_size_ = std::min(read_size_ * 2, kMaxRead);
   end_ += got;
   return true;
 }

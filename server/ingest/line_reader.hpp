@@ -33,6 +33,7 @@ class LineReader {
   ByteSource& src_;
   std::size_t max_line_;
   std::vector<char> buf_;
+  std::size_t read_size_;  // bytes asked of the source per read
   std::size_t begin_ = 0, end_ = 0;  // unread bytes are buf_[begin_, end_)
   std::size_t scan_ = 0;             // bytes from begin_ known to hold no '\n'
   std::uint64_t consumed_base_ = 0;  // decoded offset of buf_[0]

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "server/ingest/binary_writer.hpp"
+
 #include <charconv>
 #include <cstdio>
 
@@ -215,13 +217,16 @@ std::vector<std::pair<const char*, double>> type_fields(const PlayerType& t) {
 
 }  // namespace
 
-bool serializer_supports(int version) { return version == 3 || version == 4 || version == 5 || version == -1; }
+bool serializer_supports(int version) { return version >= -1 && version <= 5 && version != 0; }
+bool serializer_is_binary(int version) { return version == 1 || version == 2; }
 
 std::string serialize_show(const WorldState& s, int version) {
+  if (serializer_is_binary(version)) return binary::encode_show(s, version);
   return version < 0 ? show_json(s) : show_text(s, version);
 }
 
 std::vector<std::string> serialize_params(const GameParams& p, int version) {
+  if (serializer_is_binary(version)) return binary::encode_params(p, version);
   std::vector<std::string> out;
   if (version < 0) {
     out.push_back(json{{"server_param", params_json(p.server)}}.dump());
@@ -253,6 +258,7 @@ std::vector<std::string> serialize_params(const GameParams& p, int version) {
 }
 
 std::string serialize_msg(const MessageRecord& m, int version) {
+  if (serializer_is_binary(version)) return binary::encode_msg(m, version);
   if (version < 0)
     return json{{"msg", {{"time", m.time}, {"board", m.board}, {"message", m.text}}}}.dump();
   std::string o = "(msg ";

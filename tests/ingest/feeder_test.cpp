@@ -100,7 +100,7 @@ TEST(Feeder, UnsupportedVersionIsRefusedFromTheInitPort) {
   UdpSocket mon;
   ASSERT_TRUE(mon.open(UdpEndpoint{0x7f000001, 0}));
   const UdpEndpoint init{0x7f000001, r.feeder.port()};
-  ASSERT_TRUE(mon.send_to(init, std::string_view("(dispinit version 2)\0", 21)));
+  ASSERT_TRUE(mon.send_to(init, std::string_view("(dispinit version 6)\0", 21)));
   UdpEndpoint from;
   const std::string reply = receive(mon, from);
   EXPECT_EQ(reply, std::string("(error illegal_client_version)\0", 31));

@@ -92,7 +92,7 @@ void expect_loopback_equals_log(int version, testing::Tolerance tol) {
     EXPECT_EQ(got[i].stoppage, ref[i].stoppage);
   }
   EXPECT_EQ(client.params().player_types.size(), 18u);
-  EXPECT_EQ(client.params().server.number("half_time", 0), 30);
+  EXPECT_NEAR(client.params().server.number("half_time", 0), 30, 1e-9);
   EXPECT_NE(client.server_port(), f.port());  // per-monitor port
   EXPECT_EQ(client.stats().skipped, 0u);
 }
@@ -103,6 +103,16 @@ TEST(MonitorClient, FeederLoopbackJsonEqualsLog) {
   testing::Tolerance t;
   t.counters = false;  // JSON monitor shows have none
   expect_loopback_equals_log(-1, t);
+}
+
+TEST(MonitorClient, FeederLoopbackBinaryV2WithinQuantisation) {
+  testing::Tolerance t;
+  t.pos = 1e-4;
+  t.angle = 1e-3;
+  t.stamina = 1e-4;
+  t.state_mask = 0xffff;
+  t.capacity = t.counters = t.details = false;
+  expect_loopback_equals_log(2, t);
 }
 
 TEST(MonitorClient, FeederLoopbackV4EqualsLogWithoutFocusPoint) {

@@ -84,6 +84,10 @@ bool Feeder::advance(std::string& error) {
 }
 
 void Feeder::send_to(Monitor& m, std::string_view payload) {
+  if (ingest::serializer_is_binary(m.version)) {
+    m.socket.send(payload);  // fixed-size records
+    return;
+  }
   // Every text/JSON datagram ends in NUL, as rcssserver sends them.
   std::string d(payload);
   d.push_back('\0');

@@ -5,8 +5,8 @@
 // the feeder's port; the feeder answers from a new per-monitor socket with
 // server_param, player_param and the player types, then one show (with
 // (pm)/(tm)) every simulator step, plus the log's (msg ..) records.
-// Versions 3, 4, 5 (text) and -1 (JSON) are served; others get
-// "(error illegal_client_version)" like rcssserver would.
+// Versions 1, 2 (binary), 3, 4, 5 (text) and -1 (JSON) are served; others
+// get "(error illegal_client_version)" like rcssserver would.
 #pragma once
 
 #include <atomic>
