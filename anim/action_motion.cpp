@@ -101,18 +101,19 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
 void tackle(const ActionMotion& m, float tau, ActionSample& s) {
   s.whole_body = true;
   s.weight = envelope(m, tau, 0.15f, 0.3f);
-  s.pelvis_height = 0.95f + (0.38f - 0.95f) * s.weight;
+  s.pelvis_height = 0.95f + (0.30f - 0.95f) * s.weight;
   const bool right = m.foot == Foot::Right;
   auto& a = s.angles;
-  a[dof::kPelvis + 1] = 40;   // lean back into the slide
+  a[dof::kPelvis + 1] = 30;   // lean back into the slide
   a[dof::kTorso + 1] = -15;
   a[dof::kRShoulder + 0] = 25; a[dof::kRShoulder + 1] = -60; a[dof::kRElbow] = 25;
   a[dof::kLShoulder + 0] = 25; a[dof::kLShoulder + 1] = 60; a[dof::kLElbow] = 25;
   const int lead_hip = right ? dof::kRHip : dof::kLHip, trail_hip = right ? dof::kLHip : dof::kRHip;
   const int lead_knee = right ? dof::kRKnee : dof::kLKnee, trail_knee = right ? dof::kLKnee : dof::kRKnee;
   const int lead_ankle = right ? dof::kRAnkle : dof::kLAnkle;
-  a[lead_hip] = 55; a[lead_knee] = -5; a[lead_ankle] = -20;
-  a[trail_hip] = -5; a[trail_hip + 1] = right ? 15.0f : -15.0f; a[trail_knee] = -115;
+  // The leading leg slides along the grass; the other is folded under it.
+  a[lead_hip] = 58; a[lead_knee] = -5; a[lead_ankle] = -20;
+  a[trail_hip] = 45; a[trail_hip + 1] = right ? 25.0f : -25.0f; a[trail_knee] = -150;
 }
 
 void catch_ball(const ActionMotion& m, float tau, ActionSample& s) {

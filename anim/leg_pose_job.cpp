@@ -14,12 +14,12 @@
 namespace mc::anim {
 namespace {
 
-const std::string kYzx = "yzx", kZxy = "zxy", kZ = "z";
+const std::string kYzx = "yzx", kZxy = "zxy", kZ = "z", kYz = "yz";
 
 // Wanted sole orientation in body space: yaw about Y, then pitch about Z.
 glm::mat3 sole_rotation(float yaw_deg, float pitch_deg) {
   const float a[2] = {yaw_deg, pitch_deg};
-  return joint_rotation("yz", a);
+  return joint_rotation(kYz, a);
 }
 
 }  // namespace

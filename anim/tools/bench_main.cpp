@@ -4,6 +4,7 @@
 //
 //   matchcast-anim-bench [--repeat N] LOG...
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -35,20 +36,28 @@ int main(int argc, char** argv) {
     while (src->next(s)) states.push_back(s);
     std::vector<PoseFrame> frames;
     frames.reserve(2 * states.size());
-    double best = 1e9;
+    // CPU time of this thread (what one core spends, whatever else runs on
+    // the machine) and wall time, best of `repeat`.
+    auto cpu_now = [] {
+      timespec ts{};
+      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+      return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+    };
+    double best = 1e9, best_wall = 1e9;
     for (int r = 0; r < repeat; ++r) {
       frames.clear();
       const auto t0 = std::chrono::steady_clock::now();
+      const double c0 = cpu_now();
       anim::Animator a(anim::human_skeleton(), src->params());
       for (const WorldState& st : states) a.push(st, frames);
       a.finish(frames);
-      const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      best = std::min(best, sec);
+      best = std::min(best, cpu_now() - c0);
+      best_wall = std::min(best_wall, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
     const double fps = static_cast<double>(frames.size()) / best;
-    std::printf("%s\n  %zu states -> %zu frames in %.3f s (best of %d): %.0f frames/s, %.0f player-poses/s\n"
+    std::printf("%s\n  %zu states -> %zu frames in %.3f s CPU (%.3f s wall), best of %d: %.0f frames/s, %.0f player-poses/s\n"
                 "  one core animates %.0f live games at 20 frames/s; target: a full game in <= 1 s: %s\n",
-                log.c_str(), states.size(), frames.size(), best, repeat, fps, fps * kMaxPlayers, fps / 20.0,
+                log.c_str(), states.size(), frames.size(), best, best_wall, repeat, fps, fps * kMaxPlayers, fps / 20.0,
                 best <= 1.0 ? "PASS" : "FAIL");
   }
   return 0;

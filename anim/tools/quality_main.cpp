@@ -69,7 +69,7 @@ bool write_picture(const Animated& a, const std::string& path) {
   }
   if (kick == nullptr) return false;
   const int slot = player_index(kick->side, kick->unum);
-  Image img(kCells * kCellPx, 2 * kRowPx);
+  Image img(kCells * kCellPx, 4 * kRowPx);
   std::vector<const PoseFrame*> row;
   const std::size_t k0 = kick->seq - a.frames[0].seq - kCells / 2;
   for (int c = 0; c < kCells; ++c) row.push_back(&a.frames[k0 + static_cast<std::size_t>(c)]);
@@ -88,6 +88,23 @@ bool write_picture(const Animated& a, const std::string& path) {
   for (int c = 0; c < kCells && best + static_cast<std::size_t>(c) < a.frames.size(); ++c)
     row.push_back(&a.frames[best + static_cast<std::size_t>(c)]);
   if (!row.empty()) draw_pose_row(img, 1, skel, row, slot, row[0]->players[static_cast<std::size_t>(slot)].heading);
+  // Rows 3 and 4: the first tackle and the first goalie catch or dive, from
+  // a few frames before they start.
+  const Action wanted[2][2] = {{Action::Tackle, Action::Tackle}, {Action::Catch, Action::Dive}};
+  for (int r = 0; r < 2; ++r) {
+    bool done = false;
+    for (std::size_t i = 4; i + kCells < a.infos.size() && !done; ++i) {
+      for (int p = 0; p < kMaxPlayers && !done; ++p) {
+        const PlayerFrameInfo& pi = a.infos[i].players[static_cast<std::size_t>(p)];
+        if ((pi.action != wanted[r][0] && pi.action != wanted[r][1]) || !pi.in_action) continue;
+        row.clear();
+        for (int c = 0; c < kCells; ++c) row.push_back(&a.frames[i - 4 + static_cast<std::size_t>(c)]);
+        draw_pose_row(img, 2 + r, skel, row, p, row[4]->players[static_cast<std::size_t>(p)].heading);
+        std::printf("picture row %d: slot %d, %s from seq %u\n", 3 + r, p, action_name(pi.action), row[0]->seq);
+        done = true;
+      }
+    }
+  }
   std::string err;
   if (!tools::write_png(path, img, err)) {
     std::fprintf(stderr, "%s\n", err.c_str());

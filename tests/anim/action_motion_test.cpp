@@ -1,10 +1,15 @@
 #include "anim/action_motion.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "anim/kick_planner.hpp"
+#include "anim/local_to_model_job.hpp"
+#include "proto/pose_frame.hpp"
 
 namespace mc::anim {
 namespace {
@@ -52,6 +57,32 @@ TEST(SampleAction, TackleCatchAndDiveAreWholeBodyMotions) {
     EXPECT_GT(s.weight, 0.9f);
     EXPECT_LT(s.pelvis_height, 0.9f);
     for (float v : s.angles) EXPECT_TRUE(std::isfinite(v));
+  }
+}
+
+// The whole-body poses keep every joint above the grass (and the pelvis
+// within a body length of it).
+TEST(SampleAction, WholeBodyPosesStayAboveTheGrass) {
+  const SkeletonDef& skel = human_skeleton();
+  for (MotionKind kind : {MotionKind::Tackle, MotionKind::Catch, MotionKind::Dive}) {
+    for (float side : {1.0f, -1.0f}) {
+      ActionMotion m;
+      m.kind = kind;
+      m.side = side;
+      m.foot = side > 0 ? Foot::Right : Foot::Left;
+      m.start_s = -0.15f;
+      m.end_s = 0.9f;
+      const ActionSample s = sample_action(m, 0.4f, 0, 0, 0);
+      std::array<float, kMaxDof> a{};
+      for (int d = 0; d < dof::kCount; ++d) a[static_cast<std::size_t>(d)] = s.angles[static_cast<std::size_t>(d)];
+      std::vector<glm::mat4> models(skel.joints.size());
+      LocalToModelJob fk{&skel, a, glm::vec3(0, s.pelvis_height, 0), models};
+      ASSERT_TRUE(fk.Run());
+      float lowest = 10;
+      for (const glm::mat4& j : models) lowest = std::min(lowest, j[3].y);
+      EXPECT_GT(lowest, -0.02f) << static_cast<int>(kind) << " side " << side;
+      EXPECT_LT(lowest, 0.25f) << static_cast<int>(kind) << " side " << side;  // something touches the grass
+    }
   }
 }
 
