@@ -149,8 +149,76 @@ RecordStatus parse_record(std::string_view bytes, RecordView& out, std::string& 
   return RecordStatus::Ok;
 }
 
+namespace {
+
+// Entry kinds on disk: 1 whole frame, 2 control message, 3 frame whose header
+// is coded against the previous frame of the chunk.
+constexpr std::uint8_t kEntryFrame = 1, kEntryControl = 2, kEntryCompactFrame = 3;
+
+// Compact header: u8 flags (bit 0 keyframe, bit 1 substep, bit 2 seq given,
+// bit 3 play mode and score given), varint zigzag time change, varint
+// stoppage, varint zigzag server-time change, [varint seq], [3 bytes mode,
+// score left, score right]. Empty when the header cannot be coded so (major,
+// minor or reserved flag bits differ, odd substep value).
+std::string compact_header(std::string_view prev, std::string_view cur) {
+  FrameHeader p, c;
+  std::string err;
+  if (!peek_header(prev, p, err) || !peek_header(cur, c, err)) return {};
+  if (p.major != c.major || p.minor != c.minor || static_cast<unsigned char>(cur[3]) > 1 || c.substep > 1) return {};
+  const bool seq_given = c.seq != p.seq + 1;
+  const bool mode_given = c.play_mode != p.play_mode || c.score_left != p.score_left || c.score_right != p.score_right;
+  std::string out;
+  out.push_back(static_cast<char>((c.keyframe ? 1 : 0) | (c.substep ? 2 : 0) | (seq_given ? 4 : 0) | (mode_given ? 8 : 0)));
+  const auto zz = [](std::int64_t v) { return static_cast<std::uint64_t>(v >= 0 ? v * 2 : -v * 2 - 1); };
+  const std::uint64_t dt = zz(static_cast<std::int64_t>(c.time) - p.time);
+  const std::uint64_t ds = zz(static_cast<std::int64_t>(c.server_time_ms) - static_cast<std::int64_t>(p.server_time_ms));
+  if (dt > 0xffffffffu || ds > 0xffffffffu) return {};
+  put_varint(out, static_cast<std::uint32_t>(dt));
+  put_varint(out, static_cast<std::uint32_t>(c.stoppage));
+  put_varint(out, static_cast<std::uint32_t>(ds));
+  if (seq_given) put_varint(out, c.seq);
+  if (mode_given) {
+    out.push_back(static_cast<char>(c.play_mode));
+    out.push_back(static_cast<char>(c.score_left));
+    out.push_back(static_cast<char>(c.score_right));
+  }
+  return out;
+}
+
+// Restores a 26-byte header from a compact one; false when malformed.
+bool expand_header(std::string_view prev, std::string_view in, std::size_t& at, std::string& out) {
+  FrameHeader p;
+  std::string err;
+  if (!peek_header(prev, p, err) || at >= in.size()) return false;
+  const auto flags = static_cast<unsigned char>(in[at++]);
+  if (flags > 15) return false;
+  std::uint32_t dt = 0, stoppage = 0, ds = 0, seq = p.seq + 1;
+  if (!get_varint(in, at, dt) || !get_varint(in, at, stoppage) || !get_varint(in, at, ds) || stoppage > 65535) return false;
+  if ((flags & 4) && !get_varint(in, at, seq)) return false;
+  FrameHeader c = p;
+  if (flags & 8) {
+    if (in.size() - at < 3) return false;
+    c.play_mode = static_cast<std::uint8_t>(in[at]);
+    c.score_left = static_cast<std::uint8_t>(in[at + 1]);
+    c.score_right = static_cast<std::uint8_t>(in[at + 2]);
+    at += 3;
+  }
+  const auto unzz = [](std::uint32_t u) { return (u & 1) ? -static_cast<std::int64_t>(u >> 1) - 1 : static_cast<std::int64_t>(u >> 1); };
+  c.keyframe = (flags & 1) != 0;
+  c.substep = (flags & 2) ? 1 : 0;
+  c.seq = seq;
+  c.time = static_cast<int>(p.time + unzz(dt));
+  c.stoppage = static_cast<int>(stoppage);
+  c.server_time_ms = static_cast<std::uint64_t>(static_cast<std::int64_t>(p.server_time_ms) + unzz(ds));
+  out.clear();
+  write_header(c, out);
+  return true;
+}
+
+}  // namespace
+
 void ChunkBuilder::add(ChunkEntry::Kind kind, std::string_view bytes) {
-  body_.push_back(static_cast<char>(kind));
+  body_.push_back(static_cast<char>(kind == ChunkEntry::Kind::Frame ? kEntryFrame : kEntryControl));
   put_varint(body_, static_cast<std::uint32_t>(bytes.size()));
   body_.append(bytes);
   ++entries_;
@@ -167,7 +235,17 @@ bool ChunkBuilder::add_frame(std::string_view frame, std::string& error) {
     info_.starts_with_keyframe = h.keyframe;
   }
   ++info_.frame_count;
-  add(ChunkEntry::Kind::Frame, frame);
+  const std::string compact = last_header_.empty() ? std::string() : compact_header(last_header_, frame);
+  last_header_.assign(frame.substr(0, kFrameHeaderSize));
+  if (compact.empty()) {
+    add(ChunkEntry::Kind::Frame, frame);
+  } else {
+    body_.push_back(static_cast<char>(kEntryCompactFrame));
+    put_varint(body_, static_cast<std::uint32_t>(compact.size() + frame.size() - kFrameHeaderSize));
+    body_ += compact;
+    body_.append(frame.substr(kFrameHeaderSize));
+    ++entries_;
+  }
   return true;
 }
 
@@ -183,6 +261,7 @@ std::string ChunkBuilder::finish(ChunkInfo& info) {
   body_.clear();
   entries_ = 0;
   info_ = ChunkInfo{};
+  last_header_.clear();
   return encode_record(RecordType::Chunk, payload);
 }
 
@@ -196,20 +275,35 @@ bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEnt
   const auto count = static_cast<std::uint32_t>(get(payload, 16, 4));
   std::size_t at = kChunkHeaderSize;
   std::uint32_t frames = 0;
+  std::string last_header;  // of the previous frame in this chunk
   for (std::uint32_t i = 0; i < count; ++i) {
-    if (at >= payload.size()) {
-      error = "corrupt chunk: entry " + std::to_string(i) + " missing";
-      return false;
-    }
-    const auto kind = static_cast<unsigned char>(payload[at++]);
-    std::uint32_t len = 0;
-    if ((kind != 1 && kind != 2) || !get_varint(payload, at, len) || len > payload.size() - at) {
+    const auto bad = [&] {
       error = "corrupt chunk: bad entry " + std::to_string(i);
       return false;
-    }
-    entries.push_back({static_cast<ChunkEntry::Kind>(kind), payload.substr(at, len)});
-    frames += kind == 1;
+    };
+    if (at >= payload.size()) return bad();
+    const auto kind = static_cast<unsigned char>(payload[at++]);
+    std::uint32_t len = 0;
+    if (kind < kEntryFrame || kind > kEntryCompactFrame || !get_varint(payload, at, len) || len > payload.size() - at)
+      return bad();
+    const std::string_view entry = payload.substr(at, len);
     at += len;
+    if (kind == kEntryControl) {
+      entries.push_back({ChunkEntry::Kind::Control, std::string(entry)});
+      continue;
+    }
+    std::string frame;
+    if (kind == kEntryFrame) {
+      frame.assign(entry);
+    } else {
+      std::size_t pos = 0;
+      if (last_header.empty() || !expand_header(last_header, entry, pos, frame)) return bad();
+      frame.append(entry.substr(pos));
+    }
+    if (frame.size() < kFrameHeaderSize) return bad();
+    last_header = frame.substr(0, kFrameHeaderSize);
+    entries.push_back({ChunkEntry::Kind::Frame, std::move(frame)});
+    ++frames;
   }
   if (at != payload.size() || frames != info.frame_count) {
     error = "corrupt chunk: entry count does not match its contents";

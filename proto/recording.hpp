@@ -74,10 +74,14 @@ struct ChunkInfo {
 
 struct ChunkEntry {
   enum class Kind : std::uint8_t { Frame = 1, Control = 2 } kind = Kind::Frame;
-  std::string_view bytes;  // an encoded pose frame, or a JSON control message
+  std::string bytes;  // an encoded pose frame (header restored), or a JSON control message
 };
 
-// Collects one chunk. Frames and control messages keep their order.
+// Collects one chunk. Frames and control messages keep their order. The
+// first frame of a chunk is stored whole; each later one with its 26-byte
+// header reduced to what changed since the previous frame (usually 4
+// bytes: the frames of a chunk count up by one, 50 ms apart), and restored
+// byte for byte by parse_chunk.
 class ChunkBuilder {
  public:
   // `frame` must be a valid encoded frame (its header is read); false + error otherwise.
@@ -93,6 +97,7 @@ class ChunkBuilder {
   std::string body_;
   std::uint32_t entries_ = 0;
   ChunkInfo info_;
+  std::string last_header_;  // the previous frame's header in this chunk, "" if none
 };
 
 // Parses a chunk payload; false + error when it is malformed.

@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cstring>
 
+#include "proto/hello.hpp"
+
 namespace mc::record {
 
 RecordingWriter::~RecordingWriter() {
@@ -29,7 +31,21 @@ bool RecordingWriter::open(const std::string& path, std::string_view hello_json,
   }
   path_ = path;
   offset_ = 0;
+  skipped_ = 0;
   index_.clear();
+  decoder_.reset();
+  encoder_.reset();
+  if (options_.keyframe_interval > 0) {
+    proto::Hello hello;
+    if (!proto::hello_from_json(hello_json, hello, error)) {
+      ::close(fd_);
+      fd_ = -1;
+      error = "cannot record: " + error;
+      return false;
+    }
+    decoder_ = std::make_unique<proto::FrameDecoder>(hello.skeleton);
+    encoder_ = std::make_unique<proto::FrameEncoder>(hello.skeleton, proto::EncoderOptions{options_.keyframe_interval});
+  }
   proto::rec::FileHeader header;
   header.created_unix_ms = static_cast<std::uint64_t>(
       std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
@@ -77,6 +93,18 @@ bool RecordingWriter::add_frame(std::string_view frame, std::string& error) {
     error = "recording is not open";
     return false;
   }
+  if (!decoder_) return add_encoded(frame, error);
+  PoseFrame pose;
+  std::string why;
+  if (!decoder_->decode(frame, pose, why)) {
+    ++skipped_;  // the encoder will start the next frame it gets with a keyframe (seq gap)
+    return true;
+  }
+  bool key = false;
+  return add_encoded(encoder_->encode(pose, key), error);
+}
+
+bool RecordingWriter::add_encoded(std::string_view frame, std::string& error) {
   proto::FrameHeader h;
   if (!proto::peek_header(frame, h, error)) return false;
   // A chunk starts at a keyframe whenever possible, so that a reader can

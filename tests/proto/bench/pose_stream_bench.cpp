@@ -5,6 +5,7 @@
 //
 //   proto_pose_stream_bench [--log PATH] [--states N] [--keyframe-interval F] [--synth]
 //                           [--save-frames PATH | --load-frames PATH]
+//                           [--recording-keyframe-interval N]   (0: store the stream's frames)
 // --save/--load-frames keep the animated frames (and skeleton) in a file, so
 // that codec variants are compared on identical input while anim changes.
 #include <algorithm>
@@ -60,16 +61,21 @@ int main(int argc, char** argv) {
   EncoderOptions options;
   bool synth = false;
   std::string save_frames, load_frames;
+  int recording_keyframe_interval = record::WriterOptions{}.keyframe_interval;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--log" && i + 1 < argc) log = argv[++i];
     else if (a == "--states" && i + 1 < argc) max_states = std::stoul(argv[++i]);
     else if (a == "--keyframe-interval" && i + 1 < argc) options.keyframe_interval = std::stoi(argv[++i]);
     else if (a == "--synth") synth = true;
+    else if (a == "--recording-keyframe-interval" && i + 1 < argc) recording_keyframe_interval = std::stoi(argv[++i]);
     else if (a == "--save-frames" && i + 1 < argc) save_frames = argv[++i];
     else if (a == "--load-frames" && i + 1 < argc) load_frames = argv[++i];
     else {
-      std::fprintf(stderr, "usage: %s [--log PATH] [--states N] [--keyframe-interval F] [--synth]\n", argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--log PATH] [--states N] [--keyframe-interval F] [--synth]\n"
+                   "       [--save-frames PATH | --load-frames PATH] [--recording-keyframe-interval N]\n",
+                   argv[0]);
       return 2;
     }
   }
@@ -192,7 +198,10 @@ int main(int argc, char** argv) {
   const std::string path = "/tmp/matchcast-bench-" + std::to_string(::getpid()) + ".mcrec";
   {
     record::RecordingWriter w;
-    if (!w.open(path, to_json(hello), error, {static_cast<std::uint32_t>(options.keyframe_interval), false})) {
+    record::WriterOptions wo;
+    wo.sync = false;
+    wo.keyframe_interval = recording_keyframe_interval;
+    if (!w.open(path, to_json(hello), error, wo)) {
       std::fprintf(stderr, "%s\n", error.c_str());
       return 1;
     }
@@ -225,7 +234,11 @@ int main(int argc, char** argv) {
     seek_sum += ms;
   }
   std::remove(path.c_str());
-  std::printf("recording: %.2f MB for the full game (target 3 MB), %zu chunks\n", rec_size / 1e6, reader.chunks().size());
+  std::printf("recording: %.2f MB for the full game (target 3 MB), %zu chunks, %s\n", rec_size / 1e6,
+              reader.chunks().size(),
+              recording_keyframe_interval > 0
+                  ? ("transcoded to a keyframe every " + std::to_string(recording_keyframe_interval) + " frames").c_str()
+                  : "the stream's frames as sent");
   std::printf("seek to a random time: mean %.2f ms, max %.2f ms over %d seeks (target 10 ms)\n", seek_sum / seeks,
               seek_max, seeks);
 
