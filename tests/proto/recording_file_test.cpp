@@ -96,6 +96,33 @@ TEST_F(RecordingFile, ClosedFileReadsBackEveryFrameAndControl) {
   EXPECT_NE(controls[0].find("\"kick\""), std::string::npos);
 }
 
+TEST_F(RecordingFile, TranscodingKeepsEveryDecodedValue) {
+  for (int interval : {0, 7, 40}) {
+    WriterOptions options;
+    options.sync = false;
+    options.keyframe_interval = interval;
+    const std::string path = write(200, true, options);
+    RecordingReader r;
+    std::string error;
+    ASSERT_TRUE(r.open(path, error)) << error;
+    proto::FrameDecoder stream(hello.skeleton);
+    PoseFrame f, g;
+    std::size_t n = 0;
+    while (r.next(f, error)) {
+      ASSERT_TRUE(stream.decode(encoded[n], g, error)) << error;
+      ASSERT_EQ(f.seq, g.seq);
+      ASSERT_EQ(f.server_time_ms, g.server_time_ms);
+      for (std::size_t i = 0; i < f.players.size(); ++i) {
+        ASSERT_EQ(f.players[i].x, g.players[i].x) << "interval " << interval << " frame " << n;
+        ASSERT_EQ(f.players[i].heading, g.players[i].heading);
+        ASSERT_EQ(f.players[i].angles, g.players[i].angles) << "interval " << interval << " frame " << n;
+      }
+      ++n;
+    }
+    EXPECT_EQ(n, 200u) << error;
+  }
+}
+
 TEST_F(RecordingFile, SeeksToAnySimulationTime) {
   const std::string path = write(200, true);
   RecordingReader r;

@@ -72,7 +72,9 @@ TEST(RecordingFormat, ChunksKeepFramesAndControlsInOrder) {
   ASSERT_EQ(entries.size(), 6u);
   EXPECT_EQ(entries[3].kind, ChunkEntry::Kind::Control);
   EXPECT_EQ(entries[3].bytes, R"({"type":"kick"})");
-  EXPECT_EQ(entries[4].bytes, encoded[3]);
+  EXPECT_EQ(entries[0].bytes, encoded[0]);
+  EXPECT_EQ(entries[4].bytes, encoded[3]);  // compact headers are restored byte for byte
+  EXPECT_EQ(entries[5].bytes, encoded[4]);
   EXPECT_EQ(parsed.first_seq, frames[0].seq);
   // A chunk payload cut anywhere is refused, never over-read.
   for (std::size_t n = 0; n < v.payload.size(); ++n)
