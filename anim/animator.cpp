@@ -147,12 +147,26 @@ void Animator::plan_actions(std::uint64_t pos, int slot) {
     const PlayerState& q = sp.players[i];
     if (r == Action::Kick) {
       ctx.last_action_pos = k + 1;
+      // The bits say kick; the geometry must agree (some feeds lose the
+      // fault bit): the ball was within the player's kickable distance.
+      const double reach = params_.type(q.type).kickable_distance(params_.ball_size()) + 0.25;
+      if (std::hypot(sp.ball.x - q.x, sp.ball.y - q.y) > reach) continue;
       const double contact = (static_cast<double>(k) - 0.5) * step_s;
       if (ctx.motion_active && merge_kick(ctx.motion, contact, k)) continue;
       KickPlanInput in;
       in.root_x = static_cast<float>(0.5 * (p.x + q.x));
       in.root_y = static_cast<float>(0.5 * (p.y + q.y));
-      in.heading = ctx.heading;
+      // The heading the player will have at contact: the per-frame filter of
+      // player_animation run forward from now towards the 2D body's heading.
+      {
+        const float target = smoothed_heading(k - 1, slot);
+        const double now_s = static_cast<double>(pos) * step_s;
+        const int frames = static_cast<int>(std::lround((contact - now_s) / (0.5 * step_s)));
+        float h = ctx.heading;
+        for (int n = 0; n < frames; ++n)
+          h = wrap_deg(h + clampf(0.5f * delta_deg(target, h), -kMaxTurnPerFrameDeg, kMaxTurnPerFrameDeg));
+        in.heading = h;
+      }
       in.ball_x = static_cast<float>(sp.ball.x);
       in.ball_y = static_cast<float>(sp.ball.y);
       in.after_x = static_cast<float>(sk.ball.x);
@@ -297,7 +311,9 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       // The action playing at this frame, if any.
       ActionSample sample;
       const double now = (static_cast<double>(pos) + 0.5 * sub) * step_s;
-      if (in.reset) ctx.motion_active = ctx.next_pending = false;  // a teleport cancels whatever was playing
+      // A teleport cancels what was playing; an action planned for after it
+      // (a kick-off kick) keeps its plan, made from the new positions.
+      if (in.reset && ctx.motion_active && ctx.motion.contact_time_s < now) ctx.motion_active = false;
       if (ctx.next_pending && (!ctx.motion_active || now > ctx.motion.contact_time_s + 1e-6)) {
         ctx.motion = ctx.next_motion;
         ctx.motion_active = true;
