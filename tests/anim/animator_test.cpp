@@ -115,15 +115,19 @@ TEST(Animator, LegsSwingWhenRunningAndRestWhenStanding) {
   EXPECT_NEAR(out[50].players[1].angles[dof::kRHip], out[90].players[1].angles[dof::kRHip], 1e-4f);
 }
 
-// A walk up to the ball and a kick at cycle `k` (and `k2` if given) by left 1.
+// A walk up to the ball and a kick at cycle `k` (and `k2` if given) by left
+// 1: the ball lies 0.6 m ahead of the player until a kick, then flies off at
+// 2 m/cycle; before a second kick it is back at the player's feet.
 std::vector<WorldState> kick_game(int k, int k2 = -1) {
   auto g = run_game(40, 0.2, 0);
+  double ball_x = g[0].players[0].x + 0.6;
   for (std::size_t i = 0; i < g.size(); ++i) {
-    const double px = g[i].players[0].x;
-    g[i].ball.x = static_cast<int>(i) < k ? g[static_cast<std::size_t>(k - 1)].players[0].x + 0.6 : 0;
+    const int c = static_cast<int>(i);
+    const bool flying = (c >= k && (k2 < 0 || c < k2 - 3)) || (k2 >= 0 && c >= k2);
+    ball_x = flying ? ball_x + 2.0 : g[i].players[0].x + 0.6;
+    if (k2 >= 0 && k2 - k == 1 && c == k2) ball_x += 0.5;  // the second touch pushes it on
+    g[i].ball.x = ball_x;
     g[i].ball.y = 0.15;
-    if (static_cast<int>(i) >= k) g[i].ball.x = g[static_cast<std::size_t>(k - 1)].players[0].x + 0.6 + 2.0 * (static_cast<int>(i) - k + 1);
-    (void)px;
   }
   g[static_cast<std::size_t>(k)].players[0].state |= state_bits::kKick;
   if (k2 >= 0) g[static_cast<std::size_t>(k2)].players[0].state |= state_bits::kKick;
@@ -174,6 +178,20 @@ TEST(Animator, KicksInConsecutiveCyclesAreOneKick) {
   int kicks = 0;
   for (const AnimEvent& e : events) kicks += e.type == AnimEventType::Kick;
   EXPECT_EQ(kicks, 1);
+  // ...whose follow-through lasts longer than a single kick's.
+  auto action_frames = [](const std::vector<WorldState>& g) {
+    GameParams params;
+    Animator a(human_skeleton(), params);
+    std::vector<FrameInfo> infos;
+    a.set_frame_info_sink(&infos);
+    std::vector<PoseFrame> out;
+    for (const WorldState& s : g) a.push(s, out);
+    a.finish(out);
+    int n = 0;
+    for (const FrameInfo& f : infos) n += f.players[0].in_action;
+    return n;
+  };
+  EXPECT_EQ(action_frames(kick_game(20, 21)), action_frames(kick_game(20)) + 2);
   events.clear();
   animate(kick_game(20, 26), {}, &events);
   kicks = 0;
