@@ -67,30 +67,5 @@ TEST(HumanSkeleton, IsAboutOnePointEightMetresTallStandingOnTheSoles) {
   EXPECT_LT(m[kLUpperArm][3].z, 0.0f);
 }
 
-TEST(LocalToModelJob, FollowsTheSignConventions) {
-  const SkeletonDef& s = human_skeleton();
-  std::array<float, kMaxDof> angles{};
-  std::vector<glm::mat4> m(s.joints.size());
-  angles[dof::kRHip] = 90;     // flexion: the foot swings forward
-  angles[dof::kLKnee] = -90;   // knee flexion: the shin goes back
-  LocalToModelJob job{&s, angles, glm::vec3(0, 1, 0), m};
-  ASSERT_TRUE(job.Run());
-  EXPECT_NEAR(m[kRShin][3].x, dims::kThigh, 1e-5f);
-  EXPECT_NEAR(m[kLFoot][3].x, -dims::kShin, 1e-5f);
-  // A positive yaw of the pelvis turns +X towards -Z (left).
-  angles = {};
-  angles[dof::kPelvis] = 90;
-  ASSERT_TRUE(job.Run());
-  EXPECT_NEAR(m[kRThigh][3].x, dims::kHipHalfWidth, 1e-5f);  // the right hip comes forward
-}
-
-TEST(LocalToModelJob, RejectsShortSpans) {
-  const SkeletonDef& s = human_skeleton();
-  std::array<float, 4> few{};
-  std::vector<glm::mat4> m(s.joints.size());
-  EXPECT_FALSE((LocalToModelJob{&s, few, glm::vec3(0), m}.Run()));
-  EXPECT_FALSE((LocalToModelJob{nullptr, few, glm::vec3(0), m}.Validate()));
-}
-
 }  // namespace
 }  // namespace mc::anim

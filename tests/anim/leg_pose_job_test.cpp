@@ -1,0 +1,64 @@
+#include "anim/leg_pose_job.hpp"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "anim/human_skeleton.hpp"
+#include "anim/local_to_model_job.hpp"
+#include "proto/pose_frame.hpp"
+
+namespace mc::anim {
+namespace {
+
+TEST(LegPoseJob, PutsBothAnklesOnTheirTargetsWithTheSolesLevel) {
+  const SkeletonDef& s = human_skeleton();
+  for (float pelvis_yaw : {0.0f, 8.0f, -8.0f}) {
+    std::array<float, kMaxDof> a{};
+    a[dof::kPelvis] = pelvis_yaw;
+    a[dof::kPelvis + 1] = -5;  // leaning forward a little
+    LegPoseJob job;
+    job.pelvis_height = 0.93f;
+    job.feet[0].ankle_ms[0] = 0.25f; job.feet[0].ankle_ms[1] = 0.08f; job.feet[0].ankle_ms[2] = 0.12f;
+    job.feet[1].ankle_ms[0] = -0.1f; job.feet[1].ankle_ms[1] = 0.12f; job.feet[1].ankle_ms[2] = -0.1f;
+    job.feet[1].yaw_deg = 10;
+    job.angles = std::span<float>(a.data(), a.size());
+    ASSERT_TRUE(job.Run());
+    EXPECT_TRUE(job.reached[0]);
+    EXPECT_TRUE(job.reached[1]);
+    std::vector<glm::mat4> m(s.joints.size());
+    LocalToModelJob fk{&s, a, glm::vec3(0, 0.93f, 0), m};
+    ASSERT_TRUE(fk.Run());
+    for (int side = 0; side < 2; ++side) {
+      const glm::mat4& foot = m[side == 0 ? kRFoot : kLFoot];
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(foot[3][c], job.feet[side].ankle_ms[c], 1e-3f) << side << " " << c;
+      // The sole's forward axis is level (pitch 0 asked), within 3 deg: the
+      // ankle has no twist dof, so a sole turned against the knee keeps a residue.
+      const glm::vec3 fwd = glm::normalize(glm::vec3(foot[0]));
+      EXPECT_NEAR(fwd.y, 0.0f, 0.05f) << side;
+    }
+  }
+}
+
+TEST(LegPoseJob, ClampsUnreachableFeetWithoutNaN) {
+  std::array<float, kMaxDof> a{};
+  LegPoseJob job;
+  job.pelvis_height = 0.95f;
+  job.feet[0].ankle_ms[0] = 2.0f;   // far out of reach
+  job.feet[0].ankle_ms[1] = 0.08f;
+  job.feet[1].ankle_ms[1] = 0.08f;
+  job.feet[1].ankle_ms[2] = -0.1f;
+  job.angles = std::span<float>(a.data(), a.size());
+  ASSERT_TRUE(job.Run());
+  EXPECT_FALSE(job.reached[0]);
+  EXPECT_TRUE(job.reached[1]);
+  for (float v : a) EXPECT_TRUE(std::isfinite(v));
+  std::array<float, 4> few{};
+  job.angles = std::span<float>(few.data(), few.size());
+  EXPECT_FALSE(job.Run());
+}
+
+}  // namespace
+}  // namespace mc::anim

@@ -1,0 +1,52 @@
+#include "anim/local_to_model_job.hpp"
+
+#include <array>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "anim/human_skeleton.hpp"
+#include "proto/pose_frame.hpp"
+
+namespace mc::anim {
+namespace {
+
+TEST(LocalToModelJob, FollowsTheSignConventions) {
+  const SkeletonDef& s = human_skeleton();
+  std::array<float, kMaxDof> angles{};
+  std::vector<glm::mat4> m(s.joints.size());
+  angles[dof::kRHip] = 90;     // flexion: the foot swings forward
+  angles[dof::kLKnee] = -90;   // knee flexion: the shin goes back
+  LocalToModelJob job{&s, angles, glm::vec3(0, 1, 0), m};
+  ASSERT_TRUE(job.Run());
+  EXPECT_NEAR(m[kRShin][3].x, dims::kThigh, 1e-5f);
+  EXPECT_NEAR(m[kLFoot][3].x, -dims::kShin, 1e-5f);
+  // A positive yaw of the pelvis turns +X towards -Z (left).
+  angles = {};
+  angles[dof::kPelvis] = 90;
+  ASSERT_TRUE(job.Run());
+  EXPECT_NEAR(m[kRThigh][3].x, dims::kHipHalfWidth, 1e-5f);  // the right hip comes forward
+}
+
+TEST(LocalToModelJob, RejectsShortSpans) {
+  const SkeletonDef& s = human_skeleton();
+  std::array<float, 4> few{};
+  std::vector<glm::mat4> m(s.joints.size());
+  EXPECT_FALSE((LocalToModelJob{&s, few, glm::vec3(0), m}.Run()));
+  EXPECT_FALSE((LocalToModelJob{nullptr, few, glm::vec3(0), m}.Validate()));
+}
+
+TEST(LocalToModelJob, ComposesRotationsInDofOrder) {
+  // "zx": R = Rz(a) * Rx(b), intrinsic. Rz(90) * Rx(90) maps +Y to +Z then
+  // +Z stays +Z under Rz: so +Y -> +Z.
+  const float a[2] = {90, 90};
+  const glm::mat3 r = joint_rotation("zx", a);
+  const glm::vec3 y = r * glm::vec3(0, 1, 0);
+  EXPECT_NEAR(y.z, 1.0f, 1e-5f);
+  // +X -> Rz(90): +Y.
+  const glm::vec3 x = r * glm::vec3(1, 0, 0);
+  EXPECT_NEAR(x.y, 1.0f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace mc::anim
