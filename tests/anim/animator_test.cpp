@@ -1,7 +1,9 @@
 #include "anim/animator.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <new>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -11,10 +13,31 @@
 #include "anim/local_to_model_job.hpp"
 #include "synthetic_game.hpp"
 
+// Counts heap allocations while `g_counting` is set (replaces the global
+// operator new of this test executable).
+namespace {
+bool g_counting = false;
+long g_allocations = 0;
+}  // namespace
+void* operator new(std::size_t n) {
+  if (g_counting) ++g_allocations;
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
 namespace mc::anim {
 namespace {
 
 using testing::run_game;
+
+std::vector<WorldState> kick_game(int k, int k2 = -1);
+std::vector<WorldState> kick_game_for_alloc() {
+  auto g = kick_game(20);
+  g[30].play_mode = PlayMode::GoalL;  // and a play-mode event
+  return g;
+}
 
 std::vector<PoseFrame> animate(const std::vector<WorldState>& game, AnimConfig cfg = {},
                                std::vector<AnimEvent>* events = nullptr) {
@@ -95,6 +118,24 @@ TEST(Animator, HeadFollowsTheServerNeckAngleAtCycles) {
   }
 }
 
+TEST(Animator, DoesNotAllocateBeyondTheOutputVectors) {
+  auto game = kick_game_for_alloc();
+  GameParams params;
+  Animator a(human_skeleton(), params);
+  std::vector<PoseFrame> out;
+  std::vector<AnimEvent> events;
+  out.reserve(2 * game.size());
+  events.reserve(64);
+  g_allocations = 0;
+  g_counting = true;
+  for (const WorldState& s : game) a.push(s, out, &events);
+  a.finish(out, &events);
+  g_counting = false;
+  EXPECT_EQ(g_allocations, 0);
+  EXPECT_EQ(out.size(), 2 * game.size());
+  EXPECT_FALSE(events.empty());
+}
+
 TEST(Animator, EqualInputGivesByteEqualOutput) {
   const auto game = run_game(60, 0.8);
   const auto a = animate(game);
@@ -118,7 +159,7 @@ TEST(Animator, LegsSwingWhenRunningAndRestWhenStanding) {
 // A walk up to the ball and a kick at cycle `k` (and `k2` if given) by left
 // 1: the ball lies 0.6 m ahead of the player until a kick, then flies off at
 // 2 m/cycle; before a second kick it is back at the player's feet.
-std::vector<WorldState> kick_game(int k, int k2 = -1) {
+std::vector<WorldState> kick_game(int k, int k2) {
   auto g = run_game(40, 0.2, 0);
   double ball_x = g[0].players[0].x + 0.6;
   for (std::size_t i = 0; i < g.size(); ++i) {
