@@ -2,9 +2,12 @@
 //
 // A frame is a 26-byte header (proto/frame_header.hpp) and a body coded
 // with an adaptive binary range coder. Keyframes are self-contained; a delta
-// frame codes each quantized value as the residual of a linear prediction
-// from the two previous frames, in contexts chosen by how much the same
-// value moved last time (codec_model.hpp).
+// frame codes each quantized value as the residual of a prediction from the
+// two previous frames (hold or linear, whichever has served that kind of
+// value better), minus a share of a partner dof's residual (mirrored limbs),
+// in contexts chosen by how much the same value moved last time
+// (codec_model.hpp). Costs on a real full game: SPEC.md and the benchmark
+// tests/proto/bench/pose_stream_bench.cpp.
 // The relay encodes each frame once and sends the same bytes to everyone.
 #pragma once
 
