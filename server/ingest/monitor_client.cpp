@@ -1,6 +1,7 @@
 #include "server/ingest/monitor_client.hpp"
 
 #include <algorithm>
+#include <thread>
 
 namespace mc::ingest {
 namespace {
@@ -119,8 +120,10 @@ StateSource::Wait MonitorClient::next_for(WorldState& out, std::chrono::millisec
         break;
       case UdpSocket::Recv::Error:
         // e.g. ECONNREFUSED from an earlier send: the server is gone; the
-        // silence timer turns this into FeedLost.
+        // silence timer turns this into FeedLost. Pause briefly so that a
+        // persistent error cannot spin the loop.
         error_ = socket_.error();
+        std::this_thread::sleep_for(std::min<std::chrono::milliseconds>(ms, std::chrono::milliseconds(10)));
         break;
     }
   }
