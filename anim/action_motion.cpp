@@ -46,7 +46,8 @@ float envelope(const ActionMotion& m, float tau, float in_s, float out_s) {
 
 void kick(const ActionMotion& m, float tau, float heading, float root_x, float root_y, ActionSample& s) {
   s.feet = true;
-  s.weight = smoothstep((tau - m.start_s) / 0.1f);
+  // Ramp in over at most 0.1 s, and fully in by contact whatever the look-ahead.
+  s.weight = smoothstep((tau - m.start_s) / std::min(0.1f, std::max(-m.start_s, 0.01f)));
   const int k = m.foot == Foot::Right ? 0 : 1;
   const int sup = 1 - k;
   float along, up, pitch;
@@ -68,11 +69,17 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
   s.foot_yaw[k] = m.foot_yaw;
   s.foot_pitch[k] = pitch;
   s.planted[k] = tau >= m.end_s - 1e-4f;
-  // The support foot is down beside the ball from just before contact.
-  const float plant_at = std::min(-0.05f, m.start_s + 0.1f);
+  s.foot_weight[k] = s.weight;
+  // The support foot is down beside the ball from just before contact; it
+  // leaves locomotion for its spot only in the 0.1 s before it plants (a long
+  // look-ahead does not pin it to a spot the running body has not reached).
+  const float plant_at = std::max(-0.05f, m.start_s);
+  const float reach_from = std::max(m.start_s, plant_at - 0.1f);
+  const float sw = tau >= plant_at ? 1.0f : smoothstep((tau - reach_from) / std::max(plant_at - reach_from, 0.01f));
+  s.foot_weight[sup] = std::min(sw, s.weight > 0 ? 1.0f : 0.0f);
   s.foot_x[sup] = m.support_x;
   s.foot_y[sup] = m.support_y;
-  s.foot_h[sup] = dims::kAnkleHeight + (tau < plant_at ? 0.08f * std::sin(kPi * s.weight) : 0.0f);
+  s.foot_h[sup] = dims::kAnkleHeight + (tau < plant_at ? 0.08f * std::sin(kPi * sw) : 0.0f);
   s.foot_yaw[sup] = heading;
   s.foot_pitch[sup] = 0;
   s.planted[sup] = tau >= plant_at - 1e-4f;

@@ -46,6 +46,9 @@ struct ActionSample {
   float foot_yaw[2] = {0, 0};    // field deg
   float foot_pitch[2] = {0, 0};  // deg, + toes up
   bool planted[2] = {false, false};
+  // Kick: how much each foot follows the kick rather than locomotion (the
+  // support foot is handed over only shortly before it plants).
+  float foot_weight[2] = {0, 0};
   float root_dx = 0, root_dy = 0;  // field m
   float pelvis_height = 0.9f;
   // Angles blended over locomotion's with `weight`: all dofs (tackle, catch,

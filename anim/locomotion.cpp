@@ -50,8 +50,9 @@ float human_step_length(float v) {
 }
 
 void take_over_feet(LocomotionState& s, const float x[2], const float y[2], const float yaw[2],
-                    const bool planted[2]) {
+                    const bool planted[2], const bool take[2]) {
   for (int i = 0; i < 2; ++i) {
+    if (!take[i]) continue;
     FootState& f = s.feet[i];
     f.x = f.from_x = x[i];
     f.y = f.from_y = y[i];

@@ -86,8 +86,9 @@ float human_step_length(float speed_mps);
 
 // An action (a kick) placed the feet: take them over so that locomotion
 // resumes from where they are. Field positions (m) and sole yaws (deg).
+// Only the feet with take[i] set are taken over.
 void take_over_feet(LocomotionState& state, const float x[2], const float y[2], const float yaw[2],
-                    const bool planted[2]);
+                    const bool planted[2], const bool take[2]);
 
 // Advances `state` by one frame. Deterministic; no allocation.
 void step_locomotion(LocomotionState& state, const LocomotionInput& in, const LocomotionParams& params,

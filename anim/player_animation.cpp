@@ -42,6 +42,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   li.reset = in.reset || !in.animate_locomotion;
   LocomotionOutput lo;
   step_locomotion(ctx.loco, li, lp, lo);
+  if (!in.animate_locomotion) lo.planted[0] = lo.planted[1] = false;  // gliding: no foot is held
   ctx.action = in.action;
 
   std::span<float> a(out.angles.data(), static_cast<std::size_t>(dof::kCount));
@@ -97,26 +98,26 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   if (act != nullptr && w > 0 && act->feet) {
     // The kick places both feet in field space; blend from locomotion's.
     const BodyFrame body(px, py, heading);
+    bool take[2] = {false, false};
     for (int i = 0; i < 2; ++i) {
+      const float fw = act->foot_weight[i];
       float bx, bz;
       body.to_body(act->foot_x[i], act->foot_y[i], bx, bz);
       FootTarget& f = feet[i];
-      f.ankle_ms[0] += (bx - f.ankle_ms[0]) * w;
-      f.ankle_ms[1] += (act->foot_h[i] - f.ankle_ms[1]) * w;
-      f.ankle_ms[2] += (bz - f.ankle_ms[2]) * w;
-      f.yaw_deg += (-delta_deg(act->foot_yaw[i], heading) - f.yaw_deg) * w;
-      f.pitch_deg += (act->foot_pitch[i] - f.pitch_deg) * w;
+      f.ankle_ms[0] += (bx - f.ankle_ms[0]) * fw;
+      f.ankle_ms[1] += (act->foot_h[i] - f.ankle_ms[1]) * fw;
+      f.ankle_ms[2] += (bz - f.ankle_ms[2]) * fw;
+      f.yaw_deg += (-delta_deg(act->foot_yaw[i], heading) - f.yaw_deg) * fw;
+      f.pitch_deg += (act->foot_pitch[i] - f.pitch_deg) * fw;
+      // A foot fully in the kick is the kick's (and locomotion resumes from
+      // it); while blending in it is held only if both say so.
+      take[i] = fw > 0.99f;
+      lo.planted[i] = take[i] ? act->planted[i] : (fw > 0.01f ? lo.planted[i] && act->planted[i] : lo.planted[i]);
     }
-    if (w > 0.99f) {
+    if (take[0] || take[1]) {
       const float yaw[2] = {act->foot_yaw[0], act->foot_yaw[1]};
-      take_over_feet(ctx.loco, act->foot_x, act->foot_y, yaw, act->planted);
-      ctx.loco.pelvis_height = pelvis_h;
-      lo.planted[0] = act->planted[0];
-      lo.planted[1] = act->planted[1];
-    } else {
-      // Blending in: a foot is held only if both say so.
-      lo.planted[0] = lo.planted[0] && act->planted[0];
-      lo.planted[1] = lo.planted[1] && act->planted[1];
+      take_over_feet(ctx.loco, act->foot_x, act->foot_y, yaw, act->planted, take);
+      if (w > 0.99f) ctx.loco.pelvis_height = pelvis_h;
     }
   } else if (act != nullptr && w > 0.5f) {
     lo.planted[0] = lo.planted[1] = false;  // tackles, catches, dives: feet are not held

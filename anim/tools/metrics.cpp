@@ -164,6 +164,8 @@ QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& st
           ++s.frames;
         } else if (s.on) {
           if (s.frames >= 2) r.slide_m.values.push_back(s.worst);
+          if (s.frames >= 2 && s.worst > 0.3 && std::getenv("MATCHCAST_ANIM_SLIDES") != nullptr)
+            std::fprintf(stderr, "slide %.2f seq %u slot %zu foot %d frames %d\n", s.worst, f.seq, p, foot, s.frames);
           if (s.frames >= 2 && s.worst >= r.slide_m.max()) {
             char buf[96];
             std::snprintf(buf, sizeof buf, "seq %u, slot %zu, foot %d", f.seq, p, foot);
