@@ -83,6 +83,12 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
   s.foot_yaw[sup] = heading;
   s.foot_pitch[sup] = 0;
   s.planted[sup] = tau >= plant_at - 1e-4f;
+  // After contact, once the 2D player has run on past the support foot's
+  // reach, locomotion takes that foot back (it steps off, it is not dragged).
+  if (tau > 0 && std::hypot(m.support_x - root_x, m.support_y - root_y) > 0.45f) {
+    s.planted[sup] = false;
+    s.foot_weight[sup] = 0;
+  }
   // Step-in: the root reaches towards the ball on the contact frame only, so
   // that it still lies on the 2D position at every cycle.
   if (std::fabs(tau) < 0.02f) { s.root_dx = m.lunge_x; s.root_dy = m.lunge_y; }
