@@ -47,8 +47,11 @@ bool RecordingWriter::open(const std::string& path, std::string_view hello_json,
     encoder_ = std::make_unique<proto::FrameEncoder>(hello.skeleton, proto::EncoderOptions{options_.keyframe_interval});
   }
   proto::rec::FileHeader header;
-  header.created_unix_ms = static_cast<std::uint64_t>(
-      std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
+  header.created_unix_ms = options_.created_unix_ms != 0
+                               ? options_.created_unix_ms
+                               : static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                                                std::chrono::system_clock::now().time_since_epoch())
+                                                                .count());
   return write_all(proto::rec::encode_file_header(header) +
                        proto::rec::encode_record(proto::rec::RecordType::Hello, hello_json),
                    error);

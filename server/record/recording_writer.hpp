@@ -35,6 +35,9 @@ struct WriterOptions {
   // (~35 us each unloaded, ~2 ms), well inside the 10 ms target. 100 saves
   // 9 % but a loaded machine then misses 10 ms on some seeks.
   int keyframe_interval = 40;
+  // Creation time written in the file header (Unix ms); 0 = now. Fixed only
+  // to make reproducible files (the golden recording).
+  std::uint64_t created_unix_ms = 0;
 };
 
 class RecordingWriter {

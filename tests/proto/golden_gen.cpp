@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
   }
   // The golden recording: the same frames, a kick and a goal event.
   mc::record::RecordingWriter writer;
-  if (!writer.open(dir + "/recording_v1.mcrec", to_json(hello), error_out, {8, false, 0})) {
+  if (!writer.open(dir + "/recording_v1.mcrec", to_json(hello), error_out, {8, false, 0, 1763769600000ull})) {
     std::cerr << "golden_gen: " << error_out << "\n";
     return 1;
   }
