@@ -71,8 +71,10 @@ bool FrameDecoder::decode(std::string_view bytes, PoseFrame& out, std::string& e
 
   const std::string_view body = bytes.substr(kFrameHeaderSize);
   DecodeIo io{RangeDecoder(body), error};
-  // Decode into a copy: a refused frame leaves no half-updated state behind.
-  detail::CodecModel next = model_;
+  // Decoded in place: a refused frame leaves the model half-updated, but it
+  // also sets history = 0, and the only frame accepted next is a keyframe,
+  // which resets every part of the model that a delta reads.
+  detail::CodecModel& next = model_;
   QuantFrame q;
   bool ok;
   if (h.keyframe) {
@@ -103,7 +105,6 @@ bool FrameDecoder::decode(std::string_view bytes, PoseFrame& out, std::string& e
     return false;
   }
   next.push(q);
-  model_ = next;
   last_seq_ = h.seq;
   out.seq = h.seq;
   out.time = h.time;
