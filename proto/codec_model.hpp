@@ -192,7 +192,9 @@ bool walk_keyframe(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q)
     if (!io.value(s.pos_z, p.z, before ? before->z : 0, kPositionMin, kPositionMax, 0, 0, r)) return false;
     if (!io.heading(s.heading, p.heading, 0, 0, 0, r)) return false;
     // Angles: predicted by the previous player's pose (parked and standing
-    // players share one), the first player by the zero-angle pose.
+    // players share one), the first player by the zero-angle pose. (The
+    // zero-angle pose for every player has a lower order-0 entropy but cost
+    // 3.5 % more keyframe bytes: runs of equal poses are what adapts.)
     bool prev_nonzero = false;
     for (int d = 0; d < quant.dof_count(); ++d) {
       const auto k = static_cast<std::size_t>(d);
