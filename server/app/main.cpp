@@ -3,13 +3,18 @@
 
 #include <csignal>
 #include <cstdio>
+#include <ctime>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "server/app/feed_control.hpp"
 #include "server/app/log_feed.hpp"
+#include "server/app/recorder.hpp"
 #include "server/app/server_options.hpp"
 #include "server/relay/log.hpp"
 #include "server/relay/relay_server.hpp"
+#include "server/replay/replay_catalog.hpp"
 
 namespace {
 
@@ -20,6 +25,16 @@ void raise_fd_limit() {
     r.rlim_cur = r.rlim_max;
     setrlimit(RLIMIT_NOFILE, &r);
   }
+}
+
+// <channel>-<UTC date-time>.mcrec: one file per channel per run, sorted by time.
+std::string recording_name(const std::string& channel) {
+  std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
+  return channel + "-" + stamp + mc::replay::kRecordingSuffix;
 }
 
 }  // namespace
@@ -52,7 +67,20 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  mc::relay::RelayServer server(options->relay, channels, &feeds);
+  std::vector<std::shared_ptr<mc::app::Recorder>> recorders;
+  if (!options->record_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(options->record_dir, ec);
+    for (const auto& cf : options->feeds) {
+      const auto path = (std::filesystem::path(options->record_dir) / recording_name(cf.channel)).string();
+      // A recording that cannot start is logged; the broadcast goes on.
+      auto rec = mc::app::Recorder::start(channels->find(cf.channel), path, error);
+      if (rec) recorders.push_back(std::move(rec));
+      else mc::relay::log_event("recording_failed", error);
+    }
+  }
+  mc::replay::ReplayCatalog replays(options->record_dir);
+  mc::relay::RelayServer server(options->relay, channels, &feeds, &replays);
   if (!server.start(error)) {
     std::fprintf(stderr, "matchcast-server: %s\n", error.c_str());
     if (options->relay.port != 0)
@@ -71,6 +99,7 @@ int main(int argc, char** argv) {
   mc::relay::log_event("stopping", sig == SIGTERM ? "SIGTERM" : "SIGINT");
   feeds.stop_all();
   server.stop();
+  for (auto& rec : recorders) rec->stop();
   mc::relay::log_event("stopped");
   return 0;
 }

@@ -50,6 +50,8 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     ("max-connections-per-ip", po::value(&o.relay.max_connections_per_ip)->default_value(o.relay.max_connections_per_ip),
         "connections one client address may hold, 0 = no limit")
     ("allowed-origins", po::value(&origins), "comma-separated Origin values allowed to open the stream (default: any)")
+    ("record-dir", po::value(&o.record_dir)->default_value(o.record_dir),
+        "record every live channel here and offer the recordings for replay (empty: off)")
     ("control-token", po::value(&o.relay.control_token),
         "bearer token for POST /control/... (default: control disabled)");
   // clang-format on

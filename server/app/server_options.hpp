@@ -21,6 +21,9 @@ struct ChannelFeed {
 struct ServerOptions {
   relay::RelayConfig relay;
   std::vector<ChannelFeed> feeds;  // at least one
+  // Every live channel is recorded here, and its recordings are offered for
+  // replay. Empty = no recording, no replay.
+  std::string record_dir = "recordings";
 };
 
 // Parses argv. Returns nullopt when the program should exit: after --help

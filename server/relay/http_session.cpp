@@ -108,6 +108,10 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   if (path == "/metrics")
     return send(text_response(req, http::status::ok, render_metrics(context_.stats, context_.channels),
                               "text/plain; version=0.0.4"));
+  if (path == "/recordings")
+    return send(text_response(req, http::status::ok,
+                              context_.replays ? context_.replays->list_json() : "{\"recordings\":[]}",
+                              "application/json"));
   if (path == "/channels")
     return send(text_response(req, http::status::ok, render_channels(context_.channels),
                               "application/json"));
@@ -155,20 +159,32 @@ void HttpSession::upgrade(http::request<http::string_body>&& req) {
     ++context_.stats.refused_full;
     return send(text_response(req, http::status::service_unavailable, "server full\n"));
   }
-  const std::string name = query_param(sv(req.target()), "channel");
-  auto channel = name.empty() ? context_.channels.default_channel() : context_.channels.find(name);
-  if (!channel) return send(text_response(req, http::status::not_found, "no such channel\n"));
+  std::shared_ptr<ReplaySource> replay;
+  std::shared_ptr<Channel> channel;
+  const std::string recording = query_param(sv(req.target()), "recording");
+  if (!recording.empty()) {
+    // A private replay: the spectator steers its own copy of the recording.
+    std::string error;
+    if (context_.replays) replay = context_.replays->open(recording, stream_.get_executor(), error);
+    if (!replay) return send(text_response(req, http::status::not_found, "no such recording\n"));
+    channel = replay->channel();
+  } else {
+    const std::string name = query_param(sv(req.target()), "channel");
+    channel = name.empty() ? context_.channels.default_channel() : context_.channels.find(name);
+    if (!channel) return send(text_response(req, http::status::not_found, "no such channel\n"));
+  }
   beast::error_code ec;
   const auto peer = stream_.socket().remote_endpoint(ec);
-  if (ec) return;
-  auto ticket = context_.limiter->acquire(peer.address());
+  auto ticket = ec ? nullptr : context_.limiter->acquire(peer.address());
   if (!ticket) {
+    if (replay) replay->close();
+    if (ec) return;
     ++context_.stats.refused_per_ip;
     return send(text_response(req, http::status::too_many_requests, "too many connections from your address\n"));
   }
   stream_.expires_never();
   std::make_shared<WebSocketSession>(std::move(stream_), std::move(channel), context_.config,
-                                     context_.stats, std::move(ticket))
+                                     context_.stats, std::move(ticket), std::move(replay))
       ->run(std::move(req));
 }
 

@@ -11,6 +11,7 @@
 #include "server/relay/connection_limiter.hpp"
 #include "server/relay/control_handler.hpp"
 #include "server/relay/relay_config.hpp"
+#include "server/relay/replay_source.hpp"
 #include "server/relay/relay_stats.hpp"
 #include "server/relay/static_files.hpp"
 
@@ -24,6 +25,7 @@ struct HttpContext {
   ChannelRegistry& channels;             // /ws?channel=NAME
   std::shared_ptr<ConnectionLimiter> limiter;
   ControlHandler* control = nullptr;     // /control/...; nullptr = none
+  ReplayFactory* replays = nullptr;      // /ws?recording=NAME, /recordings; nullptr = none
 };
 
 // The value of `key` in a target's query string ("/ws?channel=a&x=1"), or "".

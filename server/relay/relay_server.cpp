@@ -9,12 +9,12 @@ namespace net = boost::asio;
 namespace mc::relay {
 
 RelayServer::RelayServer(RelayConfig config, std::shared_ptr<ChannelRegistry> channels,
-                         ControlHandler* control)
+                         ControlHandler* control, ReplayFactory* replays)
     : config_(std::move(config)),
       files_(config_.web_root),
       channels_(std::move(channels)),
       context_{config_, stats_, files_, *channels_,
-               std::make_shared<ConnectionLimiter>(config_.max_connections_per_ip), control},
+               std::make_shared<ConnectionLimiter>(config_.max_connections_per_ip), control, replays},
       ioc_(config_.threads ? static_cast<int>(config_.threads)
                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {}
 

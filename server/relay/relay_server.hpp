@@ -23,9 +23,10 @@ class Listener;
 
 class RelayServer {
  public:
-  // `control` may be nullptr (no control endpoints); it must outlive the server.
+  // `control` and `replays` may be nullptr (no control endpoints, no
+  // replays); they must outlive the server.
   RelayServer(RelayConfig config, std::shared_ptr<ChannelRegistry> channels,
-              ControlHandler* control = nullptr);
+              ControlHandler* control = nullptr, ReplayFactory* replays = nullptr);
   ~RelayServer();
   RelayServer(const RelayServer&) = delete;
   RelayServer& operator=(const RelayServer&) = delete;

@@ -18,12 +18,14 @@ constexpr int kMaxInboundPerSecond = 20;
 
 WebSocketSession::WebSocketSession(beast::tcp_stream&& stream, std::shared_ptr<Channel> channel,
                                    const RelayConfig& config, RelayStats& stats,
-                                   std::unique_ptr<ConnectionLimiter::Ticket> ticket)
+                                   std::unique_ptr<ConnectionLimiter::Ticket> ticket,
+                                   std::shared_ptr<ReplaySource> replay)
     : ws_(std::move(stream)),
       channel_(std::move(channel)),
       config_(config),
       stats_(stats),
       ticket_(std::move(ticket)),
+      replay_(std::move(replay)),
       queue_(config.max_queue_bytes),
       stall_timer_(ws_.get_executor()) {
   ++stats_.clients;
@@ -46,6 +48,10 @@ void WebSocketSession::end_session() {
   open_ = false;
   channel_->leave(this);
   stall_timer_.cancel();
+  if (replay_) {
+    replay_->close();
+    replay_.reset();
+  }
 }
 
 void WebSocketSession::shutdown() {
@@ -85,18 +91,23 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t) {
     end_session();
     return;
   }
-  in_.consume(in_.size());
   const auto now = std::chrono::steady_clock::now();
   if (now - window_start_ > std::chrono::seconds(1)) {
     window_start_ = now;
     window_messages_ = 0;
   }
   if (++window_messages_ > kMaxInboundPerSecond) {
+    in_.consume(in_.size());
     ++stats_.inbound_rejected;
     return close_with(websocket::close_code::policy_error, "too many messages");
   }
-  // Spectators are read-only: control messages are ignored until the relay
-  // offers per-spectator controls.
+  // Live spectators are read-only: their messages are ignored. A replay's
+  // spectator steers its own replay.
+  if (replay_ && ws_.got_text()) {
+    const auto data = in_.data();
+    replay_->on_client_message({static_cast<const char*>(data.data()), data.size()});
+  }
+  in_.consume(in_.size());
   do_read();
 }
 

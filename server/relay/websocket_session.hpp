@@ -16,6 +16,7 @@
 #include "server/relay/connection_limiter.hpp"
 #include "server/relay/relay_config.hpp"
 #include "server/relay/relay_stats.hpp"
+#include "server/relay/replay_source.hpp"
 #include "server/relay/send_queue.hpp"
 
 namespace mc::relay {
@@ -27,7 +28,8 @@ class WebSocketSession : public Subscriber,
   // session's lifetime.
   WebSocketSession(boost::beast::tcp_stream&& stream, std::shared_ptr<Channel> channel,
                    const RelayConfig& config, RelayStats& stats,
-                   std::unique_ptr<ConnectionLimiter::Ticket> ticket);
+                   std::unique_ptr<ConnectionLimiter::Ticket> ticket,
+                   std::shared_ptr<ReplaySource> replay = nullptr);
   ~WebSocketSession() override;
 
   // Completes the upgrade for `req` and starts the session.
@@ -55,6 +57,7 @@ class WebSocketSession : public Subscriber,
   const RelayConfig& config_;
   RelayStats& stats_;
   std::unique_ptr<ConnectionLimiter::Ticket> ticket_;
+  std::shared_ptr<ReplaySource> replay_;  // set for a private replay: gets the spectator's messages
   std::int64_t accounted_queue_bytes_ = 0;  // this session's share of stats_.queued_bytes
   boost::beast::flat_buffer in_;
   SendQueue queue_;

@@ -60,7 +60,8 @@ TEST(LogFeed, PublishesDecodableContinuousFramesOfTheRealGame) {
     frames.insert(frames.end(), collector->messages.begin(), collector->messages.end());
   }
   ASSERT_GE(frames.size(), 200u);
-  proto::FrameDecoder decoder(hello.skeleton);
+  auto decoder_ptr = std::make_unique<proto::FrameDecoder>(hello.skeleton);  // large: not on the stack
+  auto& decoder = *decoder_ptr;
   PoseFrame f, start;
   std::uint32_t last_seq = 0;
   bool have = false;

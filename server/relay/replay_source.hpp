@@ -1,0 +1,39 @@
+// A spectator's private stream that the spectator steers (a replay of a
+// recording: pause, seek, speed, goals). The relay only moves bytes: it
+// subscribes the session to the source's channel and hands the spectator's
+// text messages to the source. The owner of recordings implements it.
+#pragma once
+
+#include <boost/asio/any_io_executor.hpp>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "server/relay/channel.hpp"
+
+namespace mc::relay {
+
+class ReplaySource {
+ public:
+  virtual ~ReplaySource() = default;
+  // The private channel the session subscribes to.
+  virtual std::shared_ptr<Channel> channel() = 0;
+  // A text message from the spectator (JSON); called on the session's strand.
+  virtual void on_client_message(std::string_view text) = 0;
+  // The spectator left: stop producing.
+  virtual void close() = 0;
+};
+
+class ReplayFactory {
+ public:
+  virtual ~ReplayFactory() = default;
+  // A new private replay of the recording `name`, driven on `executor` (the
+  // spectator's strand). nullptr + error when there is no such recording.
+  virtual std::shared_ptr<ReplaySource> open(const std::string& name,
+                                             boost::asio::any_io_executor executor,
+                                             std::string& error) = 0;
+  // The recordings as JSON (/recordings).
+  virtual std::string list_json() = 0;
+};
+
+}  // namespace mc::relay

@@ -1,0 +1,60 @@
+#include "server/replay/replay_catalog.hpp"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace mc::replay {
+
+bool valid_recording_name(const std::string& name) {
+  if (name.empty() || name.size() > 200 || name.front() == '.') return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) return false;
+  const std::string suffix = kRecordingSuffix;
+  return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::shared_ptr<relay::ReplaySource> ReplayCatalog::open(const std::string& name,
+                                                         boost::asio::any_io_executor executor,
+                                                         std::string& error) {
+  if (dir_.empty() || !valid_recording_name(name)) {
+    error = "no such recording";
+    return nullptr;
+  }
+  const std::string path = (fs::path(dir_) / name).string();
+  auto reader = std::make_unique<record::RecordingReader>();
+  if (!reader->open(path, error)) return nullptr;
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  RecordingSummary summary;
+  {
+    std::lock_guard lock(mutex_);
+    auto it = summaries_.find(name);
+    if (it != summaries_.end() && it->second.size == size) summary = it->second.summary;
+  }
+  if (summary.last_time == 0 && summary.goals.empty()) {
+    if (!summarize(*reader, summary, error)) return nullptr;
+    std::lock_guard lock(mutex_);
+    summaries_[name] = Cached{size, summary};
+  }
+  auto player = std::make_shared<ReplayPlayer>(executor, name, std::move(reader), std::move(summary));
+  player->start();
+  return player;
+}
+
+std::string ReplayCatalog::list_json() {
+  nlohmann::json list = nlohmann::json::array();
+  std::error_code ec;
+  if (!dir_.empty())
+    for (const auto& entry : fs::directory_iterator(dir_, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (!entry.is_regular_file(ec) || !valid_recording_name(name)) continue;
+      list.push_back({{"name", name}, {"bytes", entry.file_size(ec)}});
+    }
+  std::sort(list.begin(), list.end(),
+            [](const auto& a, const auto& b) { return a["name"].template get<std::string>() < b["name"].template get<std::string>(); });
+  return nlohmann::json{{"recordings", list}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+}  // namespace mc::replay

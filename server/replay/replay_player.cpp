@@ -1,0 +1,195 @@
+#include "server/replay/replay_player.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "proto/control_messages.hpp"
+
+namespace mc::replay {
+namespace {
+
+// A jump to a goal starts this many cycles before it, to see the build-up.
+constexpr int kGoalLeadCycles = 50;
+// Pressing "previous goal" within this many cycles after a goal's lead-in
+// goes to the goal before it, as a video player's "previous" does.
+constexpr int kPrevGoalSlack = 30;
+
+std::uint64_t unix_ms() {
+  using namespace std::chrono;
+  return static_cast<std::uint64_t>(duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count());
+}
+
+}  // namespace
+
+bool summarize(record::RecordingReader& reader, RecordingSummary& out, std::string& error) {
+  out = {};
+  PoseFrame f;
+  bool first = true;
+  int left = 0, right = 0;
+  reader.rewind();
+  while (reader.next(f, error)) {
+    if (first) {
+      out.first_time = f.time;
+      left = f.score_left;
+      right = f.score_right;
+      first = false;
+    }
+    if (f.score_left > left) out.goals.push_back({f.time, Side::Left});
+    if (f.score_right > right) out.goals.push_back({f.time, Side::Right});
+    left = f.score_left;
+    right = f.score_right;
+    out.last_time = f.time;
+  }
+  reader.rewind();
+  if (!error.empty()) return false;
+  if (first) {
+    error = "the recording holds no frames";
+    return false;
+  }
+  return true;
+}
+
+ReplayPlayer::ReplayPlayer(boost::asio::any_io_executor executor, std::string name,
+                           std::unique_ptr<record::RecordingReader> reader, RecordingSummary summary)
+    : timer_(executor),
+      name_(std::move(name)),
+      reader_(std::move(reader)),
+      summary_(std::move(summary)),
+      channel_(std::make_shared<relay::Channel>("replay:" + name_)),
+      encoder_(reader_->hello().skeleton) {
+  channel_->set_hello(reader_->hello_json());
+  channel_->set_feed_state(relay::FeedState::Live);
+}
+
+void ReplayPlayer::start() {
+  publish_status();
+  schedule();
+}
+
+void ReplayPlayer::schedule() {
+  if (closed_ || paused_) return;
+  timer_.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double, std::milli>(kFrameIntervalMs / speed_)));
+  timer_.async_wait([self = shared_from_this()](boost::system::error_code ec) { self->on_tick(ec); });
+}
+
+void ReplayPlayer::on_tick(boost::system::error_code ec) {
+  if (ec || closed_ || paused_) return;
+  if (!send_next()) {
+    // The end of the recording: hold the last picture, paused.
+    paused_ = true;
+    publish_status();
+    return;
+  }
+  // The first frame, then once a second: a late status is cheap, a missing
+  // one leaves the spectator's seek bar blank.
+  if (seq_ == 1 || ++frames_since_status_ >= 20) publish_status();
+  schedule();
+}
+
+bool ReplayPlayer::send_next() {
+  PoseFrame f;
+  std::string error;
+  controls_.clear();
+  if (!reader_->next(f, error, &controls_)) return false;
+  // Recorded events name recorded frames: renumber them like the frame.
+  const std::int64_t shift = static_cast<std::int64_t>(seq_) - f.seq;
+  for (const auto& text : controls_) {
+    proto::ControlMessage m;
+    std::string ignored;
+    if (!proto::control_from_json(text, m, ignored)) continue;
+    std::visit([shift](auto& e) {
+      if constexpr (requires { e.seq; }) e.seq = static_cast<std::uint32_t>(static_cast<std::int64_t>(e.seq) + shift);
+      if constexpr (requires { e.contact_time_ms; })
+        e.contact_time_ms = static_cast<std::uint64_t>(static_cast<std::int64_t>(e.contact_time_ms) + shift * kFrameIntervalMs);
+    }, m);
+    channel_->publish_control(proto::to_json(m));
+  }
+  f.seq = seq_++;
+  f.server_time_ms = unix_ms();
+  time_ = f.time;
+  bool key = false;
+  channel_->publish_frame(encoder_.encode(f, key), key);
+  return true;
+}
+
+void ReplayPlayer::seek(int time) {
+  time = std::clamp(time, summary_.first_time, summary_.last_time);
+  PoseFrame f;
+  std::string error;
+  if (!reader_->seek(time, f, error)) return;
+  // seek() decoded the frame at `time`: send it as the new picture. A jump
+  // breaks the delta chain, so it goes out as a keyframe.
+  f.seq = seq_++;
+  f.server_time_ms = unix_ms();
+  time_ = f.time;
+  encoder_.force_keyframe();
+  bool key = false;
+  channel_->publish_frame(encoder_.encode(f, key), key);
+}
+
+void ReplayPlayer::on_client_message(std::string_view text) {
+  if (closed_) return;
+  const auto j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object() || j.value("type", "") != "replay" || !j.contains("action") ||
+      !j["action"].is_string())
+    return;  // not for us: spectators' other messages are ignored
+  const std::string action = j["action"];
+  const bool was_paused = paused_;
+  if (action == "pause") {
+    paused_ = true;
+  } else if (action == "play") {
+    paused_ = false;
+  } else if (action == "toggle") {
+    paused_ = !paused_;
+  } else if (action == "seek" && j.contains("time") && j["time"].is_number()) {
+    seek(static_cast<int>(j["time"].get<double>()));
+  } else if (action == "speed" && j.contains("speed") && j["speed"].is_number()) {
+    speed_ = std::clamp(j["speed"].get<double>(), 0.25, 8.0);
+  } else if (action == "next_goal") {
+    for (const auto& g : summary_.goals)
+      if (g.time - kGoalLeadCycles > time_) {
+        seek(g.time - kGoalLeadCycles);
+        break;
+      }
+  } else if (action == "prev_goal") {
+    for (auto it = summary_.goals.rbegin(); it != summary_.goals.rend(); ++it)
+      if (it->time - kGoalLeadCycles + kPrevGoalSlack < time_) {
+        seek(it->time - kGoalLeadCycles);
+        break;
+      }
+  } else {
+    return;
+  }
+  if (was_paused && !paused_) {
+    timer_.cancel();
+    schedule();
+  } else if (!paused_ && action == "speed") {
+    timer_.cancel();
+    schedule();
+  }
+  publish_status();
+}
+
+void ReplayPlayer::publish_status() {
+  frames_since_status_ = 0;
+  nlohmann::json goals = nlohmann::json::array();
+  for (const auto& g : summary_.goals) goals.push_back({{"time", g.time}, {"side", g.side == Side::Left ? "l" : "r"}});
+  channel_->publish_control(nlohmann::json{{"type", "replay"},
+                                           {"name", name_},
+                                           {"time", time_},
+                                           {"paused", paused_},
+                                           {"speed", speed_},
+                                           {"first_time", summary_.first_time},
+                                           {"last_time", summary_.last_time},
+                                           {"goals", goals}}
+                                .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+}
+
+void ReplayPlayer::close() {
+  closed_ = true;
+  timer_.cancel();
+}
+
+}  // namespace mc::replay

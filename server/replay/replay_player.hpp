@@ -1,0 +1,84 @@
+// One spectator's private replay of a recording: it reads the file, paces
+// the frames at 20 Hz times the chosen speed, and obeys the spectator's
+// controls. Frames are decoded and encoded again for the spectator, so that
+// after any jump the stream restarts cleanly at a keyframe with a continuous
+// sequence. Everything runs on the spectator's strand: no locks.
+//
+// Spectator -> server (text, JSON):
+//   {"type":"replay","action":"pause"|"play"|"toggle"}
+//   {"type":"replay","action":"seek","time":CYCLE}
+//   {"type":"replay","action":"speed","speed":0.25..8}
+//   {"type":"replay","action":"next_goal"|"prev_goal"}
+// Server -> spectator, on every change and once a second:
+//   {"type":"replay","name":..,"time":..,"paused":..,"speed":..,
+//    "first_time":..,"last_time":..,"goals":[{"time":..,"side":"l"|"r"}]}
+#pragma once
+
+#include <boost/asio/any_io_executor.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "proto/frame_codec.hpp"
+#include "server/record/recording_reader.hpp"
+#include "server/relay/replay_source.hpp"
+
+namespace mc::replay {
+
+// Where a goal happened in a recording.
+struct GoalMark {
+  int time = 0;       // simulation cycle of the goal
+  Side side = Side::Neutral;  // the team that scored
+};
+
+// What a recording holds, found once by reading it through.
+struct RecordingSummary {
+  int first_time = 0, last_time = 0;
+  std::vector<GoalMark> goals;
+};
+
+// Reads the whole recording and notes its time range and goals (score
+// changes in the frame headers). False + error on a damaged file.
+bool summarize(record::RecordingReader& reader, RecordingSummary& out, std::string& error);
+
+class ReplayPlayer : public relay::ReplaySource, public std::enable_shared_from_this<ReplayPlayer> {
+ public:
+  ReplayPlayer(boost::asio::any_io_executor executor, std::string name,
+               std::unique_ptr<record::RecordingReader> reader, RecordingSummary summary);
+
+  // Starts producing frames (call once, after construction).
+  void start();
+
+  std::shared_ptr<relay::Channel> channel() override { return channel_; }
+  void on_client_message(std::string_view text) override;
+  void close() override;
+
+  // For tests and status: the simulation time of the last frame sent.
+  int time() const { return time_; }
+  bool paused() const { return paused_; }
+  double speed() const { return speed_; }
+
+ private:
+  void schedule();
+  void on_tick(boost::system::error_code ec);
+  bool send_next();
+  void seek(int time);
+  void publish_status();
+
+  boost::asio::steady_timer timer_;
+  std::string name_;
+  std::unique_ptr<record::RecordingReader> reader_;
+  RecordingSummary summary_;
+  std::shared_ptr<relay::Channel> channel_;
+  proto::FrameEncoder encoder_;
+  std::vector<std::string> controls_;
+  std::uint32_t seq_ = 0;
+  int time_ = 0;
+  int frames_since_status_ = 0;
+  double speed_ = 1.0;
+  bool paused_ = false;
+  bool closed_ = false;
+};
+
+}  // namespace mc::replay
