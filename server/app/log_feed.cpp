@@ -72,16 +72,38 @@ LogFeed::LogFeed(FeedConfig config, std::shared_ptr<relay::Channel> channel)
 LogFeed::~LogFeed() { stop(); }
 
 bool LogFeed::start(std::string& error) {
-  auto source = ingest::open_log(config_.log_path, error);
+  live_ = ingest::is_live_spec(config_.log_path);
+  auto source = ingest::open_source(config_.log_path, error);
   if (!source) return false;
   WorldState first;
-  if (!source->next(first)) {
-    error = config_.log_path + ": the log holds no game states";
-    return false;
+  bool have_first = false;
+  if (live_) {
+    const auto deadline = Clock::now() + config_.first_state_timeout;
+    while (!have_first && Clock::now() < deadline) {
+      const auto w = source->next_for(first, std::chrono::milliseconds(100));
+      if (w == ingest::StateSource::Wait::End) break;
+      have_first = w == ingest::StateSource::Wait::State;
+    }
+    if (!have_first) {
+      error = config_.log_path + ": no game state arrived (is rcssserver running there?)";
+      return false;
+    }
+  } else {
+    have_first = source->next(first);
+    if (!have_first) {
+      error = config_.log_path + ": the log holds no game states";
+      return false;
+    }
   }
   hello_ = make_hello(first, source->params(), config_.keyframe_interval, config_.log_path);
   channel_->set_hello(hello_);
   channel_->set_feed_state(relay::FeedState::Live);
+  // A live session cannot be replayed from its start: keep the one opened
+  // here, first state included, for the playback thread.
+  if (live_) {
+    first_source_ = std::move(source);
+    first_state_ = first;
+  }
   thread_ = std::thread([this] { run(); });
   return true;
 }
@@ -103,23 +125,40 @@ bool LogFeed::wait_until(Clock::time_point deadline) {
   return !wake_.wait_until(lock, deadline, [this] { return stopping_; });
 }
 
+void LogFeed::announce_feed(bool lost, const std::string& detail) {
+  channel_->set_feed_state(lost ? relay::FeedState::Lost : relay::FeedState::Live);
+  proto::FeedStatus status;
+  status.lost = lost;
+  status.seq = next_seq_ ? next_seq_ - 1 : 0;
+  status.server_time_ms = unix_ms();
+  status.detail = detail;
+  channel_->publish_control(proto::to_json(proto::ControlMessage{status}));
+  relay::log_event(lost ? "feed_lost" : "feed_back", config_.log_path + ": " + detail);
+}
+
 void LogFeed::run() {
   do {
     if (!play_once()) return;
     relay::log_event("feed_loop", config_.log_path);
-  } while (config_.loop);
+  } while (config_.loop && !live_);
   channel_->set_feed_state(relay::FeedState::Ended);
 }
 
 bool LogFeed::play_once() {
   std::string error;
-  auto source = ingest::open_log(config_.log_path, error);
-  if (!source) {
-    relay::log_event("feed_error", error);
-    return wait_until(Clock::now() + std::chrono::seconds(1));
-  }
+  std::unique_ptr<ingest::StateSource> source;
   WorldState state;
-  if (!source->next(state)) return wait_until(Clock::now() + std::chrono::seconds(1));
+  if (first_source_) {
+    source = std::move(first_source_);
+    state = first_state_;
+  } else {
+    source = ingest::open_source(config_.log_path, error);
+    if (!source) {
+      relay::log_event("feed_error", error);
+      return wait_until(Clock::now() + std::chrono::seconds(1));
+    }
+    if (!source->next(state)) return wait_until(Clock::now() + std::chrono::seconds(1));
+  }
 
   anim::Animator animator(anim::human_skeleton(), source->params());
   proto::FrameEncoder encoder(anim::human_skeleton(),
@@ -134,9 +173,10 @@ bool LogFeed::play_once() {
   auto publish = [&](std::vector<PoseFrame>& batch) {
     for (PoseFrame& f : batch) {
       deadline += interval;
-      // After a stall (a suspended process, a slow disk) do not rush to
-      // catch up: resume at the normal pace from now.
-      if (Clock::now() - deadline > std::chrono::seconds(1)) deadline = Clock::now();
+      // After a stall (a suspended process, a slow disk, a live feed that
+      // paused) do not rush to catch up: resume at the normal pace from now.
+      // A live server paces itself; this only spreads its two frames.
+      if (Clock::now() - deadline > (live_ ? interval : std::chrono::seconds(1))) deadline = Clock::now();
       if (!wait_until(deadline)) return false;
       // Sequence numbers continue across loops so that clients see no gap;
       // a frame's events go out just before it, renumbered the same way.
@@ -156,10 +196,33 @@ bool LogFeed::play_once() {
     return true;
   };
 
+  // The next state: from a log at once; from a live server as it comes,
+  // passing on feed lost / back meanwhile.
+  auto next_state = [&]() -> bool {
+    if (!live_) return source->next(state);
+    for (;;) {
+      {
+        std::lock_guard lock(mutex_);
+        if (stopping_) return false;
+      }
+      const auto w = source->next_for(state, std::chrono::milliseconds(100));
+      ingest::SourceEvent ev;
+      while (source->poll_event(ev)) {
+        if (ev.kind == ingest::SourceEvent::Kind::FeedLost) announce_feed(true, ev.detail);
+        if (ev.kind == ingest::SourceEvent::Kind::FeedBack) {
+          announce_feed(false, ev.detail);
+          encoder.force_keyframe();  // spectators resync at once
+        }
+      }
+      if (w == ingest::StateSource::Wait::State) return true;
+      if (w == ingest::StateSource::Wait::End) return false;
+    }
+  };
+
   do {
     animator.push(state, frames, &events);
     if (!publish(frames)) return false;
-  } while (source->next(state));
+  } while (next_state());
   animator.finish(frames, &events);
   if (!publish(frames)) return false;
 

@@ -1,6 +1,9 @@
-// Broadcasts a game log as if it were live: reads the log state by state
-// (streamed, never whole), animates it, encodes each 20 Hz frame once and
-// publishes it to a channel in real time, looping at the end if asked.
+// Broadcasts a game: a log played as if it were live (streamed, never read
+// whole, paced in real time, looping at the end if asked), or a live
+// rcssserver through its monitor port ("udp://HOST:PORT", paced by the
+// server). Each state is animated, each 20 Hz frame encoded once and
+// published to a channel. A live feed that is lost and comes back is told to
+// spectators ("feed" messages); they stay connected meanwhile.
 //
 // This is the glue of the pipeline ingest -> anim -> proto -> relay; each
 // stage stays ignorant of the others.
@@ -13,16 +16,20 @@
 #include <string>
 #include <thread>
 
+#include "server/ingest/state_source.hpp"
 #include "server/relay/channel.hpp"
 
 namespace mc::app {
 
 struct FeedConfig {
+  // A game log path, or "udp://HOST:PORT[/VERSION]" for a live rcssserver.
   std::string log_path;
   // Playback speed: 1 = real time (10 states, 20 frames per second).
   double speed = 1.0;
   // Start again at the end: the demo is a game that never ends.
   bool loop = true;
+  // Live only: how long start() waits for the first state of the game.
+  std::chrono::milliseconds first_state_timeout{10000};
   // Frames between keyframes (1 s at 20 Hz): the longest a joiner or a
   // skipping client waits for a picture.
   int keyframe_interval = 20;
@@ -43,8 +50,10 @@ class LogFeed {
 
  private:
   void run();
-  // One pass over the log; false when stopped.
+  // One pass over the log (or one live session); false when stopped.
   bool play_once();
+  // Publishes a feed lost/back message and updates the channel's state.
+  void announce_feed(bool lost, const std::string& detail);
   // Sleeps until `deadline` or stop(); false when stopped.
   bool wait_until(std::chrono::steady_clock::time_point deadline);
 
@@ -57,6 +66,9 @@ class LogFeed {
   std::atomic<std::uint64_t> frames_{0};
   std::uint32_t next_seq_ = 0;
   std::string hello_;
+  bool live_ = false;
+  std::unique_ptr<ingest::StateSource> first_source_;  // live: the session start() opened
+  WorldState first_state_;
 };
 
 }  // namespace mc::app

@@ -28,7 +28,8 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     ("help,h", "print this help and exit")
     ("config", po::value(&config_file), "read options from this file (key = value lines)")
     ("rcg", po::value(&logs)->composing(),
-        "game log to broadcast (.rcg/.rcg.gz, any version), as PATH or CHANNEL=PATH; "
+        "game to broadcast: a log (.rcg/.rcg.gz, any version) or a live rcssserver "
+        "(udp://HOST:PORT), as SOURCE or CHANNEL=SOURCE; "
         "repeat for several games at once (default: the bundled game on channel 'live')")
     ("loop", po::value(&feed.loop)->default_value(true), "start the log again at its end (true/false)")
     ("speed", po::value(&feed.speed)->default_value(1.0), "playback speed, 1 = real time")
@@ -91,7 +92,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   for (std::size_t i = 0; i < logs.size(); ++i) {
     ChannelFeed cf{i == 0 ? "live" : "live" + std::to_string(i + 1), feed};
     const auto eq = logs[i].find('=');
-    // CHANNEL=PATH, unless the '=' belongs to the path (a '/' before it).
+    // CHANNEL=SOURCE, unless the '=' belongs to the path (a '/' before it).
     if (eq != std::string::npos && logs[i].find('/') > eq) {
       cf.channel = logs[i].substr(0, eq);
       cf.feed.log_path = logs[i].substr(eq + 1);
