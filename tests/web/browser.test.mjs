@@ -50,6 +50,7 @@ describe('web page against matchcast-server', { timeout: 600000 }, () => {
     assert.equal(p1.filter((p) => p.state !== 0).length, 22, '22 players on the pitch');
     const seq1 = s.seq;
     await page.waitForTimeout(2500);
+    await settle(2);
     const p2 = await page.evaluate(() => window.matchcast.playerPositions());
     const s2 = await stats(page);
     assert.ok(s2.seq > seq1, `the picture advances (seq ${seq1} -> ${s2.seq})`);
@@ -144,7 +145,9 @@ describe('web page against matchcast-server', { timeout: 600000 }, () => {
     assert.equal(s.timeshift.active, false, 'back to live');
     await settle();
     s = await stats(page);
-    assert.ok(s.timeshift.last - s.seq < 20, `the picture is live again (${s.seq} vs ${s.timeshift.last})`);
+    // Live again: well past the seeked moment, near the newest frame (a
+    // software renderer may be a few seconds behind by the time we ask).
+    assert.ok(s.timeshift.last - s.seq < 200 && s.seq > want + 100, `the picture is live again (${s.seq} vs ${s.timeshift.last})`);
   });
 
   test('bad messages give a visible message and the page resyncs', async () => {
@@ -177,9 +180,9 @@ describe('web page against matchcast-server', { timeout: 600000 }, () => {
       await page.goto(`${fast.url}?fixed-quality&stats`);
       const s = await waitFor(page, async () => {
         const st = await stats(page);
-        return st?.banner && /GOAL/.test(st.banner.text) ? st : null;
+        return st?.banners?.some((b) => /GOAL/.test(b.text)) ? st : null;
       }, 'a goal banner', 90000, 500);
-      assert.equal(s.banner.kind, 'goal');
+      assert.equal(s.banners.find((b) => /GOAL/.test(b.text)).kind, 'goal');
       assert.ok(s.kicks > 0 && s.sounds > 0, `kick sounds (${s.kicks})`);
       assert.ok(s.resyncs <= 1, `the playhead kept up with the 4x stream (${s.resyncs} resyncs)`);
       await page.screenshot({ path: shot('goal-banner') });

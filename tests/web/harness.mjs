@@ -30,7 +30,8 @@ export const shot = (name) => path.join(OUT_DIR, `${name}.png`);
 export function startServer({ port = 0, args = [], timeoutMs = 20000 } = {}) {
   if (!SERVER || !existsSync(SERVER)) throw new Error(`matchcast-server not found (MATCHCAST_SERVER=${SERVER})`);
   const proc = spawn(SERVER, ['--rcg', RCG, '--port', String(port), '--web', WEB_DIR, ...args],
-    { stdio: ['ignore', 'pipe', 'pipe'] });
+    // Run in the output folder: whatever the server writes (recordings) lands there.
+    { stdio: ['ignore', 'pipe', 'pipe'], cwd: OUT_DIR });
   let out = '', err = '';
   proc.stderr.on('data', (d) => { err = (err + d).slice(-4000); });
   return new Promise((resolve, reject) => {

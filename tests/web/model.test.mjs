@@ -154,3 +154,21 @@ test('time shift: pause, seek back, jump to a goal, catch up with live', async (
   for (let now = 2500; ts.active && now < 60000; now += 16) ts.sample(now);
   assert.equal(ts.active, false, 'caught up with live');
 });
+
+test('stream events play once, at their contact time, and not across jumps', async () => {
+  const { EventTrack } = await load('src/model/eventtrack.js');
+  const tr = new EventTrack({ frameMs: 50 });
+  tr.add({ type: 'goal', seq: 30 });
+  tr.add({ type: 'kick', seq: 20, contact_time_ms: 1025 });   // 20.5 frames
+  assert.deepEqual(tr.due(10), []);
+  assert.deepEqual(tr.due(20.4), []);
+  assert.deepEqual(tr.due(21).map((e) => e.ev.type), ['kick']);
+  assert.deepEqual(tr.due(21.5), []);
+  assert.deepEqual(tr.due(35).map((e) => e.ev.type), ['goal']);
+  tr.due(0);                                   // a seek back: replays play them again
+  assert.deepEqual(tr.due(21).map((e) => e.ev.type), ['kick']);
+  tr.jump();
+  assert.deepEqual(tr.due(30), [], 'right after a jump nothing plays');
+  assert.deepEqual(tr.due(100), [], 'a big step forward plays nothing');
+  assert.ok(tr.seen.has('kick'));
+});

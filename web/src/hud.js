@@ -54,6 +54,7 @@ export class Hud {
     clearTimeout(this.bannerTimer);
     this.bannerTimer = setTimeout(() => { b.className = kind; }, ms);
     this.lastBanner = { text, kind, at: performance.now() };
+    this.recentBanners = [...(this.recentBanners ?? []).slice(-9), this.lastBanner];
   }
 
   // Connection state: null hides it; `lost` draws it as an alarm.

@@ -19,7 +19,7 @@ import { TimeShift } from './net/timeshift.js';
 import { Stream } from './net/stream.js';
 import { Codec, loadDecoder, readHello } from './net/codec.js';
 import { blendFrames } from './model/interp.js';
-import { EventDetector } from './model/events.js';
+import { Announcer } from './announcer.js';
 import { STATE } from './model/playmodes.js';
 
 const params = new URLSearchParams(location.search);
@@ -27,7 +27,7 @@ const canvas = document.getElementById('view');
 const stage = createStage(canvas, { antialias: params.get('aa') !== '0', shadows: params.get('shadows') !== '0' });
 const hud = new Hud();
 const sound = new KickSound();
-const events = new EventDetector();
+const events = new Announcer(hud, sound);
 const buffer = new JitterBuffer({ delayFrames: Number(params.get('delay') ?? 3) });
 const timeshift = new TimeShift();
 
@@ -46,7 +46,7 @@ let selected = null;
 let view = null;          // the interpolated frame on screen
 const toggles = { labels: true, offside: false, reach: false, sound: true, stats: params.has('stats') };
 const counters = { frames: 0, decoded: 0, skipped: 0, decodeErrors: 0, badMessages: 0, hellos: 0,
-  rendered: 0, kicks: 0, banners: 0 };
+  rendered: 0 };
 let connection = 'connecting';
 
 // --- the match description --------------------------------------------------
@@ -86,6 +86,7 @@ function applyHello(msg) {
   if (Number.isFinite(info.params.half_time) && Number.isFinite(info.params.simulator_step))
     hud.cyclesPerSecond = 1000 / info.params.simulator_step;
   buffer.frameMs = 1000 / info.frameRate;
+  events.frameMs = buffer.frameMs;
   // A new hello is a new session: frames start again from a keyframe.
   buffer.reset();
   events.reset();
@@ -170,6 +171,14 @@ function startStream() {
 function onControl(msg) {
   counters.controls = (counters.controls ?? 0) + 1;
   lastControl = msg.type;
+  if (events.control(msg)) return;
+  if (msg.type === 'feed') {
+    if (msg.status === 'lost') hud.status(`The match feed is lost${msg.detail ? ` (${msg.detail})` : ''}. Waiting for it…`, true);
+    else if (msg.status === 'back') hud.status(null);
+  } else if (msg.type === 'teams') {
+    for (const [side, t] of [[1, msg.left], [-1, msg.right]]) if (t?.name && hud.teams?.[side]) hud.teams[side].name = t.name;
+    if (hud.teams) hud.setTeams(hud.teams[1], hud.teams[-1]);
+  }
 }
 let lastControl = null;
 
@@ -257,7 +266,7 @@ const app = {
       case 'live': timeshift.live(); break;
       default: return;
     }
-    events.reset();   // no kick or goal fires for the jump itself
+    events.jump();   // no kick or goal fires for the jump itself
     showReplay();
   },
 };
@@ -269,28 +278,6 @@ function showReplay() {
 markCamera(cameras.mode);
 hud.showStats(toggles.stats);
 for (const [k, v] of Object.entries(toggles)) document.querySelector(`[data-toggle="${k}"]`)?.classList.toggle('on', v);
-
-// --- events at the moment the picture reaches them ---------------------------
-
-function onEvents(list, playhead) {
-  for (const ev of list) {
-    const teamName = (s) => (s === 'l' || s === 1 ? hud.teams?.[1]?.name : hud.teams?.[-1]?.name) ?? '';
-    if (ev.type === 'kick') {
-      counters.kicks++;
-      sound.kick(0.7, Math.max(0, (ev.frame.seq - playhead) * buffer.frameMs / 1000));
-    } else if (ev.type === 'goal') {
-      counters.banners++;
-      hud.banner(`GOAL! ${teamName(ev.side)}  ${ev.frame.scoreLeft}–${ev.frame.scoreRight}`, 'goal', 5000);
-    } else if (ev.type === 'card') {
-      counters.banners++;
-      hud.banner(`${ev.color === 'red' ? 'Red' : 'Yellow'} card: #${ev.player.unum} ${teamName(ev.player.side)}`, `card-${ev.color}`);
-    } else if (ev.type === 'foul') {
-      counters.banners++;
-      // The mode names the team that gets the free kick.
-      hud.banner(`Foul: free kick ${teamName(ev.side)}`, 'foul');
-    }
-  }
-}
 
 // --- the render loop --------------------------------------------------------
 
@@ -309,10 +296,11 @@ function frameLoop(now) {
   const live = players ? buffer.sample(now) : null;
   const shifted = timeshift.active;
   let s = shifted ? timeshift.sample(now) : live;
-  if (shifted && !timeshift.active) { events.reset(); s = live; }   // caught up with live
+  if (shifted && !timeshift.active) { events.jump(); s = live; }   // caught up with live
   if (s) {
     view = blendFrames(s.a, s.b, s.t, view);
-    for (const f of s.passed) onEvents(events.step(f), timeshift.active ? timeshift.pos : buffer.playhead);
+    events.step(s.passed, timeshift.active ? timeshift.pos : buffer.playhead,
+      timeshift.active ? (timeshift.paused ? 0 : timeshift.speed * 1000 / buffer.frameMs) : buffer.rate);
     players.update(view.players);
     ball.update(view.ball);
     const colors = { 1: players.kits[1].shirtColor, [-1]: players.kits[-1].shirtColor };
@@ -352,12 +340,12 @@ requestAnimationFrame(frameLoop);
 
 window.matchcast = Object.freeze({
   stats: () => ({
-    ...counters, connection, connects: stream?.connects ?? 0, camera: cameras.mode,
+    ...counters, ...events.counts, connection, connects: stream?.connects ?? 0, camera: cameras.mode,
     buffered: buffer.size, dropped: buffer.dropped, late: buffer.late, resyncs: buffer.resyncs,
     fps: fpsWindow.length, kbps, seq: view?.seq ?? null, time: view?.time ?? null,
     playMode: view?.playMode ?? null, selected, hello: !!match,
     teams: match ? [hud.teams[1].name, hud.teams[-1].name] : null,
-    banner: hud.lastBanner ?? null, lastControl,
+    banner: hud.lastBanner ?? null, banners: hud.recentBanners ?? [], lastControl,
     timeshift: { active: timeshift.active, paused: timeshift.paused, pos: timeshift.pos, first: timeshift.first,
       last: timeshift.last, goals: [...timeshift.goals], bytes: timeshift.bytes, speed: timeshift.speed }, sounds: sound.played, renderMs, updateMs, scale: stage.scale,
   }),
