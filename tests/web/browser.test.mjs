@@ -150,6 +150,28 @@ describe('web page against matchcast-server', { timeout: 600000 }, () => {
     assert.ok(s.timeshift.last - s.seq < 200 && s.seq > want + 100, `the picture is live again (${s.seq} vs ${s.timeshift.last})`);
   });
 
+  test('a recording kept by the relay plays, seeks and lists', async (t) => {
+    const { recordings = [] } = await (await fetch(`${server.url}recordings`)).json().catch(() => ({}));
+    if (!recordings.length) { t.skip('this relay keeps no recordings'); return; }
+    const rec = recordings.reduce((a, b) => (b.bytes > a.bytes ? b : a));
+    await page.goto(`${server.url}?fixed-quality&stats&recording=${encodeURIComponent(rec.name)}`);
+    const st = await waitFor(page, async () => {
+      const s = await stats(page);
+      return s?.serverReplay && s.serverReplay.last_time - s.serverReplay.first_time > 100 ? s : null;
+    }, 'the replay status', 30000);
+    assert.equal(await page.isVisible('#rec-list'), true, 'the recordings menu');
+    const r = st.serverReplay;
+    const want = r.first_time + 0.5 * (r.last_time - r.first_time);
+    await page.$eval('#rp-seek', (el) => { el.value = '500'; el.dispatchEvent(new Event('input', { bubbles: true })); });
+    await waitFor(page, async () => {
+      const s = await stats(page);
+      return s.serverReplay && Math.abs(s.serverReplay.time - want) < 60 && s.time !== null && Math.abs(s.time - want) < 60;
+    }, `the picture at cycle ${want}`, 30000);
+    assert.match(await page.textContent('#rp-behind'), /^\d\d:\d\d$/);
+    await settle();
+    await page.screenshot({ path: shot('recording-seeked') });
+  });
+
   test('bad messages give a visible message and the page resyncs', async () => {
     await page.context().close();  // this test opens its own, routed page
     const ctx = await browser.newContext({ viewport: { width: 1024, height: 640 } });

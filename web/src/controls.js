@@ -72,7 +72,7 @@ export function updateReplayBar(st) {
   const seek = $('rp-seek');
   if (!seek.dataset.dragging) seek.value = String(Math.round(st.fraction * 1000));
   const s = Math.round(st.behindMs / 1000);
-  $('rp-behind').textContent = st.active ? `-${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}` : 'live';
+  $('rp-behind').textContent = st.label ?? (st.active ? `-${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}` : 'live');
   $('rp-play').textContent = st.active && st.paused ? 'Play' : 'Pause';
   $('rp-live').classList.toggle('live', !st.active);
   const speed = $('rp-speed');

@@ -16,6 +16,7 @@ import { KickSound } from './audio.js';
 import { bindControls, markCamera, updateReplayBar } from './controls.js';
 import { JitterBuffer } from './net/jitter.js';
 import { TimeShift } from './net/timeshift.js';
+import { ServerReplay, listRecordings } from './recordings.js';
 import { Stream } from './net/stream.js';
 import { Codec, loadDecoder, readHello } from './net/codec.js';
 import { blendFrames } from './model/interp.js';
@@ -100,9 +101,17 @@ function pushFrame(frame) {
 
 // --- the stream -------------------------------------------------------------
 
+// A recording (?recording=NAME) or a channel (?channel=NAME) of the relay.
+const recording = params.get('recording');
+function wsQuery() {
+  if (recording) return `?recording=${encodeURIComponent(recording)}`;
+  return params.has('channel') ? `?channel=${encodeURIComponent(params.get('channel'))}` : '';
+}
+let serverReplay = null;
+
 function startStream() {
   const wsUrl = params.get('ws') ??
-    `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws${params.has('channel') ? `?channel=${encodeURIComponent(params.get('channel'))}` : ''}`;
+    `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws${wsQuery()}`;
   const stream = new Stream(wsUrl, {
     onStatus(state, info) {
       connection = state;
@@ -172,7 +181,8 @@ function onControl(msg) {
   counters.controls = (counters.controls ?? 0) + 1;
   lastControl = msg.type;
   if (events.control(msg)) return;
-  if (msg.type === 'feed') {
+  if (msg.type === 'replay' && serverReplay) serverReplay.status(msg);
+  else if (msg.type === 'feed') {
     if (msg.status === 'lost') hud.status(`The match feed is lost${msg.detail ? ` (${msg.detail})` : ''}. Waiting for it…`, true);
     else if (msg.status === 'back') hud.status(null);
   } else if (msg.type === 'teams') {
@@ -200,6 +210,8 @@ if (params.has('fixture')) {
 } else {
   hud.status('Connecting to the match feed…');
   stream = startStream();
+  if (recording) serverReplay = new ServerReplay(recording, (m) => stream.send(m));
+  listRecordings(document.getElementById('rec-list'), recording);
 }
 
 // --- user actions -----------------------------------------------------------
@@ -250,6 +262,11 @@ const app = {
   deselect() { select(null); },
   // Time shift over what the page has received (net/timeshift.js).
   replay(cmd, arg) {
+    if (serverReplay) {
+      serverReplay.command(cmd, arg);
+      if (cmd === 'seek' || cmd.endsWith('goal')) events.jump();
+      return;
+    }
     const here = () => (view ? view.seq : timeshift.last);
     switch (cmd) {
       case 'toggle':
@@ -272,6 +289,7 @@ const app = {
 };
 bindControls(app, canvas);
 function showReplay() {
+  if (serverReplay) { updateReplayBar(serverReplay.bar()); return; }
   updateReplayBar({ available: timeshift.entries.length > 40, active: timeshift.active, paused: timeshift.paused,
     fraction: timeshift.fraction(), behindMs: timeshift.behindMs(), speed: timeshift.speed });
 }
@@ -345,7 +363,7 @@ window.matchcast = Object.freeze({
     fps: fpsWindow.length, kbps, seq: view?.seq ?? null, time: view?.time ?? null,
     playMode: view?.playMode ?? null, selected, hello: !!match,
     teams: match ? [hud.teams[1].name, hud.teams[-1].name] : null,
-    banner: hud.lastBanner ?? null, banners: hud.recentBanners ?? [], lastControl,
+    banner: hud.lastBanner ?? null, banners: hud.recentBanners ?? [], serverReplay: serverReplay?.state ?? null, lastControl,
     timeshift: { active: timeshift.active, paused: timeshift.paused, pos: timeshift.pos, first: timeshift.first,
       last: timeshift.last, goals: [...timeshift.goals], bytes: timeshift.bytes, speed: timeshift.speed }, sounds: sound.played, renderMs, updateMs, scale: stage.scale,
   }),
