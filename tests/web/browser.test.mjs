@@ -58,6 +58,14 @@ describe('web page against matchcast-server', { timeout: 600000 }, () => {
     assert.ok(moved >= 5, `players move between two moments (${moved} moved)`);
     assert.ok(await page.evaluate(() => window.matchcast.ball()), 'a ball');
     await page.screenshot({ path: shot('broadcast') });
+    // The wide orbit start shows the whole pitch: all 22 players and the ball on screen.
+    await page.keyboard.press('2');
+    await settle();
+    const onScreen = await page.evaluate(() => window.matchcast.playerPositions()
+      .map((p) => window.matchcast.screenOf(`${p.side}:${p.unum}`))
+      .filter((at) => at && at.x >= 0 && at.x <= innerWidth && at.y >= 0 && at.y <= innerHeight).length);
+    assert.equal(onScreen, 22, 'all 22 players in the wide view');
+    await page.screenshot({ path: shot('pitch-22-players') });
     assert.deepEqual(errors, []);
   });
 

@@ -33,7 +33,6 @@ export class Cameras {
     this.orbit.maxPolarAngle = 88 * DEG;
     this.orbit.minDistance = 3;
     this.orbit.maxDistance = 250;
-    this.lastBall = null;
     // Free camera: WASD/arrows move, Q/E down/up, drag to look.
     this.keys = new Set();
     this.yaw = 0; this.pitch = -0.3;
@@ -59,7 +58,12 @@ export class Cameras {
     this.snap = true;
     this.orbit.enabled = mode === 'orbit';
     if (mode === 'orbit') {
-      this.orbit.target.copy(this.look);
+      // Start wide, the whole pitch in view from the main stand, then the
+      // user turns, pans and zooms around the ball.
+      this.orbit.target.set(0, 0, 0);
+      this.camera.position.set(0, 60, this.field.width / 2 + 55);
+      this.camera.fov = 40;
+      this.camera.updateProjectionMatrix();
       this.orbit.update();
     }
     if (mode === 'free') {
@@ -95,13 +99,7 @@ export class Cameras {
         break;
       }
       case 'orbit': {
-        // Orbit about the ball: the target follows it, the user holds the rest.
-        if (this.lastBall) {
-          const d = ball.clone().sub(this.lastBall).setY(0);
-          if (d.length() < 5) { this.orbit.target.add(d); cam.position.add(d); }
-          else this.orbit.target.copy(ball);
-        }
-        this.lastBall = ball.clone();
+        // Orbit about the point the user chose (right-drag pans it).
         this.orbit.update();
         this.look.copy(this.orbit.target);
         this.snap = false;
