@@ -1,5 +1,7 @@
 #include "proto/control_messages.hpp"
 
+#include "proto/pose_frame.hpp"
+
 #include <stdexcept>
 
 namespace mc::proto {
@@ -174,6 +176,17 @@ bool control_from_json(std::string_view text, ControlMessage& out, std::string& 
     return false;
   }
   return true;
+}
+
+void shift_frames(ControlMessage& message, std::int64_t frames) {
+  std::visit(
+      [frames](auto& m) {
+        m.seq = static_cast<std::uint32_t>(static_cast<std::int64_t>(m.seq) + frames);
+        if constexpr (requires { m.contact_time_ms; })
+          m.contact_time_ms = static_cast<std::uint64_t>(static_cast<std::int64_t>(m.contact_time_ms) +
+                                                        frames * kFrameIntervalMs);
+      },
+      message);
 }
 
 }  // namespace mc::proto

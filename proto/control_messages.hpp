@@ -86,6 +86,11 @@ std::string to_json(const ControlMessage& message);  // one line
 // field is missing or out of range. A client skips unknown types.
 bool control_from_json(std::string_view text, ControlMessage& out, std::string& error);
 
+// Moves a message `frames` frames along the stream: its seq, and a kick's
+// contact time by frames * kFrameIntervalMs. A relay that renumbers frames
+// (a looping feed, a replay) renumbers their events the same way.
+void shift_frames(ControlMessage& message, std::int64_t frames);
+
 // The "type" of any control message text (hello included), "" + error when
 // there is none; for routing before parsing.
 std::string control_type(std::string_view text, std::string& error);

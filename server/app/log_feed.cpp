@@ -1,10 +1,10 @@
 #include "server/app/log_feed.hpp"
 
 #include <chrono>
-#include <optional>
 #include <vector>
 
 #include "anim/animator.hpp"
+#include "anim/event_messages.hpp"
 #include "anim/human_skeleton.hpp"
 #include "proto/control_messages.hpp"
 #include "proto/frame_codec.hpp"
@@ -38,30 +38,6 @@ std::string make_hello(const WorldState& first, const GameParams& params, int ke
   hello.right.color2 = "#ffffff";
   hello.match_id = match_id;
   return proto::to_json(hello);
-}
-
-// The wire form of an animator event, renumbered into the feed's sequence
-// (`shift` = new seq - animator seq; frames renumber the same way).
-std::optional<proto::ControlMessage> to_control(const anim::AnimEvent& e, std::int64_t shift) {
-  const auto seq = static_cast<std::uint32_t>(static_cast<std::int64_t>(e.seq) + shift);
-  switch (e.type) {
-    case anim::AnimEventType::Kick: {
-      proto::KickEvent k{seq, e.time, e.side, e.unum,
-                         e.foot == anim::Foot::Left ? proto::Foot::Left : proto::Foot::Right,
-                         static_cast<std::uint64_t>(static_cast<std::int64_t>(e.contact_time_ms) +
-                                                    shift * kFrameIntervalMs)};
-      return k;
-    }
-    case anim::AnimEventType::Goal:
-      return proto::GoalEvent{seq, e.time, e.side, e.score_left, e.score_right};
-    case anim::AnimEventType::PlayMode:
-      return proto::PlayModeEvent{seq, e.time, e.play_mode};
-    case anim::AnimEventType::Card:
-      if (e.card == anim::Card::None) return std::nullopt;
-      return proto::CardEvent{seq, e.time, e.side, e.unum,
-                              e.card == anim::Card::Red ? proto::CardColor::Red : proto::CardColor::Yellow};
-  }
-  return std::nullopt;
 }
 
 }  // namespace
@@ -125,6 +101,14 @@ bool LogFeed::wait_until(Clock::time_point deadline) {
   return !wake_.wait_until(lock, deadline, [this] { return stopping_; });
 }
 
+void LogFeed::publish_event(const anim::AnimEvent& event, std::int64_t shift) {
+  // A card event without a card says nothing to a spectator.
+  if (event.type == anim::AnimEventType::Card && event.card == anim::Card::None) return;
+  proto::ControlMessage m = anim::to_control_message(event);
+  proto::shift_frames(m, shift);
+  channel_->publish_control(proto::to_json(m));
+}
+
 void LogFeed::announce_feed(bool lost, const std::string& detail) {
   channel_->set_feed_state(lost ? relay::FeedState::Lost : relay::FeedState::Live);
   proto::FeedStatus status;
@@ -182,7 +166,7 @@ bool LogFeed::play_once() {
       // a frame's events go out just before it, renumbered the same way.
       const std::int64_t shift = static_cast<std::int64_t>(next_seq_) - f.seq;
       for (; next_event < events.size() && events[next_event].seq <= f.seq; ++next_event)
-        if (auto m = to_control(events[next_event], shift)) channel_->publish_control(proto::to_json(*m));
+        publish_event(events[next_event], shift);
       f.seq = next_seq_++;
       f.server_time_ms = unix_ms();
       bool key = false;

@@ -16,6 +16,7 @@
 #include <string>
 #include <thread>
 
+#include "anim/anim_events.hpp"
 #include "server/ingest/state_source.hpp"
 #include "server/relay/channel.hpp"
 
@@ -52,6 +53,8 @@ class LogFeed {
   void run();
   // One pass over the log (or one live session); false when stopped.
   bool play_once();
+  // Publishes an animator event, renumbered by `shift` frames like the frames.
+  void publish_event(const anim::AnimEvent& event, std::int64_t shift);
   // Publishes a feed lost/back message and updates the channel's state.
   void announce_feed(bool lost, const std::string& detail);
   // Sleeps until `deadline` or stop(); false when stopped.

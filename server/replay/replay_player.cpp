@@ -99,11 +99,7 @@ bool ReplayPlayer::send_next() {
     proto::ControlMessage m;
     std::string ignored;
     if (!proto::control_from_json(text, m, ignored)) continue;
-    std::visit([shift](auto& e) {
-      if constexpr (requires { e.seq; }) e.seq = static_cast<std::uint32_t>(static_cast<std::int64_t>(e.seq) + shift);
-      if constexpr (requires { e.contact_time_ms; })
-        e.contact_time_ms = static_cast<std::uint64_t>(static_cast<std::int64_t>(e.contact_time_ms) + shift * kFrameIntervalMs);
-    }, m);
+    proto::shift_frames(m, shift);
     channel_->publish_control(proto::to_json(m));
   }
   f.seq = seq_++;

@@ -46,6 +46,18 @@ TEST(ControlMessages, EveryTypeRoundTrips) {
   EXPECT_FALSE(std::get<FeedStatus>(round_trip(FeedStatus{false, 100, 1, ""})).lost);
 }
 
+TEST(ControlMessages, ShiftFramesMovesSeqAndContactTimeTogether) {
+  ControlMessage kick = KickEvent{100, 50, Side::Left, 9, Foot::Left, 100 * 50 + 25};
+  shift_frames(kick, 40);
+  const auto& k = std::get<KickEvent>(kick);
+  EXPECT_EQ(k.seq, 140u);
+  EXPECT_EQ(k.contact_time_ms, 140u * 50 + 25);  // still half-way after its frame
+  ControlMessage goal = GoalEvent{300, 150, Side::Right, 0, 1};
+  shift_frames(goal, -200);
+  EXPECT_EQ(std::get<GoalEvent>(goal).seq, 100u);
+  EXPECT_EQ(std::get<GoalEvent>(goal).time, 150);  // simulation time is not renumbered
+}
+
 TEST(ControlMessages, BadInputIsRefusedWithAClearError) {
   ControlMessage m;
   std::string error;
