@@ -214,7 +214,10 @@ describe('web page against matchcast-server', { timeout: 600000 }, () => {
       }, 'a goal banner', 90000, 500);
       assert.equal(s.banners.find((b) => /GOAL/.test(b.text)).kind, 'goal');
       assert.ok(s.kicks > 0 && s.sounds > 0, `kick sounds (${s.kicks})`);
-      assert.ok(s.resyncs <= 1, `the playhead kept up with the 4x stream (${s.resyncs} resyncs)`);
+      // Kept up: a page that cannot follow 4x resyncs every second or so. A
+      // couple of resyncs happen when software GL stalls on a loaded 2-core
+      // machine (seen with ctest -j2), so allow a few over ~20 s.
+      assert.ok(s.resyncs <= 4, `the playhead kept up with the 4x stream (${s.resyncs} resyncs)`);
       await page.screenshot({ path: shot('goal-banner') });
     } finally {
       await fast.stop();
