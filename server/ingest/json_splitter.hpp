@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "server/ingest/byte_source.hpp"
+#include "server/ingest/read_window.hpp"
 
 namespace mc::ingest {
 
@@ -23,18 +24,11 @@ class JsonSplitter {
   // its decoded byte offset. TooLong: an element over max_object bytes was
   // skipped. Truncated: the input ended inside an element (dropped).
   Result next(std::string_view& obj, std::uint64_t& offset);
-  std::uint64_t bytes_read() const { return base_ + pos_; }
+  std::uint64_t bytes_read() const { return w_.consumed(); }
 
  private:
-  bool fill();
-
-  ByteSource& src_;
+  ReadWindow w_;
   std::size_t max_object_;
-  std::vector<char> buf_;
-  std::size_t read_size_;  // bytes asked of the source per read
-  std::size_t pos_ = 0, end_ = 0;  // unread bytes are buf_[pos_, end_)
-  std::uint64_t base_ = 0;         // decoded offset of buf_[0]
-  bool eof_ = false;
 };
 
 }  // namespace mc::ingest

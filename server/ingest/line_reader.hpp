@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "server/ingest/byte_source.hpp"
+#include "server/ingest/read_window.hpp"
 
 namespace mc::ingest {
 
@@ -25,19 +26,12 @@ class LineReader {
   Result next(std::string_view& line, std::uint64_t& offset);
 
   // Decoded bytes handed out so far.
-  std::uint64_t bytes_read() const { return consumed_base_ + begin_; }
+  std::uint64_t bytes_read() const { return w_.consumed(); }
 
  private:
-  bool fill();  // false when the source has nothing more
-
-  ByteSource& src_;
+  ReadWindow w_;
   std::size_t max_line_;
-  std::vector<char> buf_;
-  std::size_t read_size_;  // bytes asked of the source per read
-  std::size_t begin_ = 0, end_ = 0;  // unread bytes are buf_[begin_, end_)
-  std::size_t scan_ = 0;             // bytes from begin_ known to hold no '\n'
-  std::uint64_t consumed_base_ = 0;  // decoded offset of buf_[0]
-  bool eof_ = false;
+  std::size_t scan_ = 0;  // bytes from w_.begin known to hold no '\n'
 };
 
 }  // namespace mc::ingest
