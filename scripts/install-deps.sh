@@ -14,12 +14,17 @@ runtime=(
   nlohmann-json3-dev                             # hello / control messages
   libglm-dev                                     # vector maths in anim/
   zlib1g-dev                                     # .rcg.gz logs
+  libssl-dev                                     # TLS for the relay (Boost.Asio SSL)
+  libnats-dev                                    # origin/edge relays over NATS
+  libglfw3-dev libgl-dev                         # native viewer (window + OpenGL)
   nodejs npm                                     # installs three.js for the page
 )
 testing=(
   libgtest-dev libgmock-dev libbenchmark-dev     # C++ tests and benchmarks
   clang libclang-rt-dev                          # libFuzzer targets
   chromium                                       # browser test (headless)
+  xvfb xauth libgl1-mesa-dri                     # native viewer test (Mesa under Xvfb)
+  nats-server                                    # NATS origin/edge test
 )
 wanted=("${runtime[@]}")
 if [[ "${1:-}" == "--test" ]]; then wanted+=("${testing[@]}"); fi
