@@ -5,11 +5,13 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "server/app/feed_control.hpp"
 #include "server/app/log_feed.hpp"
+#include "server/app/nats_roles.hpp"
 #include "server/app/recorder.hpp"
 #include "server/app/server_options.hpp"
 #include "server/relay/log.hpp"
@@ -68,16 +70,29 @@ int main(int argc, char** argv) {
     }
   }
   std::vector<std::shared_ptr<mc::app::Recorder>> recorders;
+  std::mutex recorders_mutex;  // an edge starts its recorders from its own thread
+  auto record = [&](const std::shared_ptr<mc::relay::Channel>& channel) {
+    const auto path = (std::filesystem::path(options->record_dir) / recording_name(channel->name())).string();
+    // A recording that cannot start is logged; the broadcast goes on.
+    std::string why;
+    auto rec = mc::app::Recorder::start(channel, path, why);
+    std::lock_guard lock(recorders_mutex);
+    if (rec) recorders.push_back(std::move(rec));
+    else mc::relay::log_event("recording_failed", why);
+  };
   if (!options->record_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(options->record_dir, ec);
-    for (const auto& cf : options->feeds) {
-      const auto path = (std::filesystem::path(options->record_dir) / recording_name(cf.channel)).string();
-      // A recording that cannot start is logged; the broadcast goes on.
-      auto rec = mc::app::Recorder::start(channels->find(cf.channel), path, error);
-      if (rec) recorders.push_back(std::move(rec));
-      else mc::relay::log_event("recording_failed", error);
-    }
+  }
+  // With NATS, exactly one place records (--record-at).
+  if (mc::app::records_local_feeds(*options))
+    for (const auto& cf : options->feeds) record(channels->find(cf.channel));
+  mc::app::NatsRoles nats;
+  if (!nats.start(*options, channels,
+                  mc::app::records_edge_games(*options) ? mc::nats::EdgeRelay::ReadyHandler(record) : nullptr,
+                  error)) {
+    std::fprintf(stderr, "matchcast-server: %s\n", error.c_str());
+    return 1;
   }
   mc::replay::ReplayCatalog replays(options->record_dir);
   mc::relay::RelayServer server(options->relay, channels, &feeds, &replays);
@@ -98,7 +113,9 @@ int main(int argc, char** argv) {
   sigwait(&stop_signals, &sig);
   mc::relay::log_event("stopping", sig == SIGTERM ? "SIGTERM" : "SIGINT");
   feeds.stop_all();
+  nats.stop();
   server.stop();
+  std::lock_guard lock(recorders_mutex);
   for (auto& rec : recorders) rec->stop();
   mc::relay::log_event("stopped");
   return 0;

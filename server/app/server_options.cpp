@@ -1,5 +1,6 @@
 #include "server/app/server_options.hpp"
 
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <fstream>
 #include <sstream>
@@ -21,6 +22,8 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   std::string origins;
   FeedConfig feed;
   unsigned max_queue_kb = 0, stall_ms = 0;
+  std::string role = "standalone", edge_games, record_at = "origin";
+  unsigned nats_reconnect_ms = 0, origin_silence_ms = 0;
   po::options_description desc(
       "matchcast-server: broadcast a RoboCup 2D game as a live 3D stream\n\nOptions");
   // clang-format off
@@ -54,7 +57,25 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     ("record-dir", po::value(&o.record_dir)->default_value(o.record_dir),
         "record every live channel here and offer the recordings for replay (empty: off)")
     ("control-token", po::value(&o.relay.control_token),
-        "bearer token for POST /control/... (default: control disabled)");
+        "bearer token for POST /control/... (default: control disabled)")
+    ("role", po::value(&role)->default_value(role),
+        "standalone (one machine, no NATS), origin (publish the feeds on NATS), "
+        "edge (serve games from NATS, no feeds) or both")
+    ("nats-url", po::value(&o.nats.url)->default_value(o.nats.url),
+        "NATS server(s), comma-separated (origin/edge/both)")
+    ("nats-subject-prefix", po::value(&o.nats.subject_prefix)->default_value(o.nats.subject_prefix),
+        "subjects <prefix>.<game>.live/.key, stream <PREFIX>_KEY")
+    ("edge-games", po::value(&edge_games),
+        "comma-separated games an edge carries (default: every game published)")
+    ("record-at", po::value(&record_at)->default_value(record_at),
+        "with NATS, where recording happens: origin, or edge (this edge records its games; "
+        "set it on the origin too)")
+    ("nats-replicas", po::value(&o.nats.stream_replicas)->default_value(o.nats.stream_replicas),
+        "copies of the keyframe stream (3 on a 3-node cluster)")
+    ("nats-reconnect-wait-ms", po::value(&nats_reconnect_ms)->default_value(static_cast<unsigned>(o.nats.reconnect_wait.count())),
+        "pause between NATS reconnect attempts")
+    ("origin-silence-ms", po::value(&origin_silence_ms)->default_value(static_cast<unsigned>(o.nats.origin_silence.count())),
+        "an edge says 'feed lost' after this long without a message from the origin");
   // clang-format on
   try {
     po::variables_map vm;
@@ -88,7 +109,44 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     exit_code = 2;
     return std::nullopt;
   }
-  if (logs.empty()) logs.push_back(source_dir + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz");
+  if (role == "standalone") o.nats.role = nats::Role::Standalone;
+  else if (role == "origin") o.nats.role = nats::Role::Origin;
+  else if (role == "edge") o.nats.role = nats::Role::Edge;
+  else if (role == "both") o.nats.role = nats::Role::Both;
+  else {
+    message = "matchcast-server: --role must be standalone, origin, edge or both, not '" + role + "'";
+    exit_code = 2;
+    return std::nullopt;
+  }
+  if (record_at != "origin" && record_at != "edge") {
+    message = "matchcast-server: --record-at must be origin or edge, not '" + record_at + "'";
+    exit_code = 2;
+    return std::nullopt;
+  }
+  o.nats.record_at = record_at == "edge" ? nats::RecordAt::Edge : nats::RecordAt::Origin;
+  if (o.nats.stream_replicas < 1 || o.nats.stream_replicas > 5) {
+    message = "matchcast-server: --nats-replicas must be in [1, 5]";
+    exit_code = 2;
+    return std::nullopt;
+  }
+  o.nats.reconnect_wait = std::chrono::milliseconds(std::max(50u, nats_reconnect_ms));
+  o.nats.origin_silence = std::chrono::milliseconds(std::max(200u, origin_silence_ms));
+  for (std::size_t pos = 0; pos < edge_games.size();) {
+    auto comma = edge_games.find(',', pos);
+    if (comma == std::string::npos) comma = edge_games.size();
+    std::string one = edge_games.substr(pos, comma - pos);
+    one.erase(0, one.find_first_not_of(' '));
+    one.erase(one.find_last_not_of(' ') + 1);
+    if (!one.empty()) o.nats.edge_games.push_back(one);
+    pos = comma + 1;
+  }
+  // An edge has no feeds of its own: its games come from NATS.
+  if (o.nats.role == nats::Role::Edge && !logs.empty()) {
+    message = "matchcast-server: an edge has no --rcg feeds (use --role both to run feeds too)";
+    exit_code = 2;
+    return std::nullopt;
+  }
+  if (logs.empty() && o.nats.role != nats::Role::Edge) logs.push_back(source_dir + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz");
   for (std::size_t i = 0; i < logs.size(); ++i) {
     ChannelFeed cf{i == 0 ? "live" : "live" + std::to_string(i + 1), feed};
     const auto eq = logs[i].find('=');

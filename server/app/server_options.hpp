@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "server/app/log_feed.hpp"
+#include "server/nats/nats_config.hpp"
 #include "server/relay/relay_config.hpp"
 
 namespace mc::app {
@@ -20,10 +21,12 @@ struct ChannelFeed {
 
 struct ServerOptions {
   relay::RelayConfig relay;
-  std::vector<ChannelFeed> feeds;  // at least one
+  std::vector<ChannelFeed> feeds;  // at least one, except on an edge (none)
   // Every live channel is recorded here, and its recordings are offered for
   // replay. Empty = no recording, no replay.
   std::string record_dir = "recordings";
+  // Origin / edge over NATS (server/nats/README.md); standalone by default.
+  nats::NatsConfig nats;
 };
 
 // Parses argv. Returns nullopt when the program should exit: after --help

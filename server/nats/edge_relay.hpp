@@ -1,0 +1,83 @@
+// The edge role: subscribes to games on NATS and serves them from local
+// channels, one EdgeSync per game. The games are a fixed list, or every game
+// an origin publishes (discovered from <prefix>.*.live, at most
+// NatsConfig::max_games).
+//
+// On start and after every reconnect each game resyncs: live messages are
+// held while the game's snapshot (hello + latest keyframe) is read from the
+// keyframe stream, so spectators get a picture at once and then the live
+// frames, each once. A game with no snapshot yet is asked again every
+// reconnect_wait until its hello is known.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <thread>
+
+#include "server/nats/edge_sync.hpp"
+#include "server/nats/nats_config.hpp"
+#include "server/nats/nats_link.hpp"
+#include "server/relay/channel_registry.hpp"
+
+namespace mc::nats {
+
+class EdgeRelay {
+ public:
+  // Called once per game, from the edge's worker thread, when its channel
+  // first has a hello (for example to start recording it).
+  using ReadyHandler = std::function<void(const std::shared_ptr<relay::Channel>&)>;
+
+  EdgeRelay(NatsConfig config, std::shared_ptr<relay::ChannelRegistry> channels, ReadyHandler on_ready = {});
+  ~EdgeRelay();
+
+  // Opens the channels of config.edge_games (in that order: the first is
+  // what "/ws" shows), subscribes and starts syncing. Games named in
+  // `local` are this process's own feeds (role both) and are never taken
+  // from NATS. False + error on bad names or NATS options only.
+  bool start(const std::set<std::string>& local, std::string& error);
+  void stop();
+
+  bool connected() const { return link_ && link_->connected(); }
+  // A game's counters, or nullopt when the edge does not carry it.
+  std::optional<EdgeSyncStats> stats(const std::string& game) const;
+  // Messages on the prefix that name no acceptable game.
+  std::uint64_t rejected_subjects() const { return rejected_subjects_.load(); }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  struct Game {
+    std::shared_ptr<EdgeSync> sync;
+    bool fetch = true;  // a snapshot read is due at next_fetch
+    Clock::time_point next_fetch{};
+    bool ready = false;  // on_ready was called
+  };
+  // The game's sync, created (with its channel) when absent and allowed.
+  std::shared_ptr<EdgeSync> game(const std::string& name);
+  void on_wildcard(std::string_view subject, std::string_view data);
+  void on_connected();
+  void on_disconnected();
+  void run();
+  void sync_games();
+
+  NatsConfig config_;
+  std::shared_ptr<relay::ChannelRegistry> channels_;
+  ReadyHandler on_ready_;
+  std::set<std::string> local_;
+  std::unique_ptr<NatsLink> link_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::map<std::string, Game> games_;
+  bool stopping_ = false;
+  std::thread worker_;
+  std::atomic<std::uint64_t> rejected_subjects_{0};
+};
+
+}  // namespace mc::nats

@@ -1,0 +1,215 @@
+#include "server/nats/edge_sync.hpp"
+
+#include "proto/control_messages.hpp"
+#include "proto/frame_header.hpp"
+#include "proto/hello.hpp"
+#include "server/relay/log.hpp"
+
+namespace mc::nats {
+namespace {
+
+// Live messages kept while a snapshot is fetched: several seconds at 20 Hz,
+// more than a fetch takes; past it the oldest go (a gap, resolved by number).
+constexpr std::size_t kMaxPending = 512;
+
+std::uint64_t unix_ms() {
+  using namespace std::chrono;
+  return static_cast<std::uint64_t>(duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count());
+}
+
+}  // namespace
+
+EdgeSync::EdgeSync(std::shared_ptr<relay::Channel> channel) : channel_(std::move(channel)) {}
+
+void EdgeSync::on_live(std::string_view bytes) {
+  std::lock_guard lock(mutex_);
+  last_live_ = Clock::now();
+  if (lost_ && silent_) {
+    silent_ = false;
+    lost_ = false;
+    announce(false, "messages from the origin again");
+  }
+  if (buffering_) {
+    pending_.emplace_back(bytes);
+    if (pending_.size() > kMaxPending) pending_.pop_front();
+    return;
+  }
+  Envelope e;
+  std::string error;
+  if (!unwrap(bytes, e, error)) return reject(error);
+  if (e.kind == Kind::Snapshot) return reject("snapshot on the live subject");
+  if (have_last_ && e.number != last_ + 1) {
+    ++stats_.gaps;
+    waiting_key_ = true;
+  }
+  apply(e);
+}
+
+void EdgeSync::apply(const Envelope& e) {
+  last_ = e.number;
+  have_last_ = true;
+  std::string error;
+  switch (e.kind) {
+    case Kind::Hello: {
+      proto::Hello h;
+      if (!proto::hello_from_json(e.payload, h, error)) return reject("hello: " + error);
+      apply_hello(e.payload);
+      break;
+    }
+    case Kind::Keyframe:
+    case Kind::Delta: {
+      const bool key = e.kind == Kind::Keyframe;
+      proto::FrameHeader header;
+      if (!proto::peek_header(e.payload, header, error)) {
+        waiting_key_ = true;  // the next delta's base is not with the spectators
+        return reject("frame: " + error);
+      }
+      if (header.keyframe != key) {
+        waiting_key_ = true;
+        return reject("frame header and envelope disagree on keyframe");
+      }
+      if (hello_.empty() || (!key && waiting_key_)) {
+        ++stats_.held_back;
+        return;
+      }
+      last_frame_seq_ = header.seq;
+      channel_->publish_frame(std::string(e.payload), key);
+      if (key) waiting_key_ = false;
+      break;
+    }
+    case Kind::Control:
+      if (proto::control_type(e.payload, error).empty()) return reject("control: " + error);
+      channel_->publish_control(std::string(e.payload));
+      break;
+    case Kind::Snapshot: return reject("snapshot among live messages");
+  }
+  ++stats_.applied;
+}
+
+void EdgeSync::apply_hello(std::string_view hello) {
+  if (hello == hello_) return;  // a resync re-reads the same hello: say nothing
+  hello_ = std::string(hello);
+  channel_->set_hello(hello_);
+  waiting_key_ = true;  // the channel dropped its keyframe group
+  if (!lost_) channel_->set_feed_state(relay::FeedState::Live);
+}
+
+void EdgeSync::begin_resync() {
+  std::lock_guard lock(mutex_);
+  buffering_ = true;
+  pending_.clear();
+}
+
+void EdgeSync::on_snapshot(const std::string* bytes) {
+  std::lock_guard lock(mutex_);
+  if (bytes) {
+    Envelope e;
+    Snapshot s;
+    std::string error;
+    proto::Hello h;
+    proto::FrameHeader header;
+    if (!unwrap(*bytes, e, error) || !unwrap_snapshot(e, s, error)) {
+      reject("snapshot: " + error);
+    } else if (!proto::hello_from_json(s.hello, h, error)) {
+      reject("snapshot hello: " + error);
+    } else if (!s.keyframe.empty() &&
+               (!proto::peek_header(s.keyframe, header, error) || !header.keyframe)) {
+      reject("snapshot keyframe: " + (error.empty() ? std::string("not a keyframe") : error));
+    } else if (!have_last_ || e.number > last_) {
+      // Newer than what the spectators have: it replaces it at once.
+      apply_hello(s.hello);
+      if (!s.keyframe.empty()) {
+        last_frame_seq_ = header.seq;
+        channel_->publish_frame(std::string(s.keyframe), true);
+        waiting_key_ = false;
+      }
+      last_ = e.number;
+      have_last_ = true;
+      ++stats_.resyncs;
+    }
+  }
+  // The live messages that came meanwhile, minus those the snapshot covers.
+  buffering_ = false;
+  std::deque<std::string> pending;
+  pending.swap(pending_);
+  for (const std::string& bytes_live : pending) {
+    Envelope e;
+    std::string error;
+    if (!unwrap(bytes_live, e, error)) {
+      reject(error);
+      continue;
+    }
+    if (e.kind == Kind::Snapshot) {
+      reject("snapshot on the live subject");
+      continue;
+    }
+    if (have_last_ && e.number <= last_) {
+      ++stats_.duplicates;
+      continue;
+    }
+    if (have_last_ && e.number != last_ + 1) {
+      ++stats_.gaps;
+      waiting_key_ = true;
+    }
+    apply(e);
+  }
+}
+
+void EdgeSync::on_link_lost(const std::string& detail) {
+  std::lock_guard lock(mutex_);
+  silent_ = false;
+  if (lost_) return;
+  lost_ = true;
+  announce(true, detail);
+}
+
+void EdgeSync::on_link_back(const std::string& detail) {
+  std::lock_guard lock(mutex_);
+  last_live_ = Clock::now();
+  silent_ = false;
+  if (!lost_) return;
+  lost_ = false;
+  announce(false, detail);
+}
+
+void EdgeSync::check_silence(Clock::time_point now, std::chrono::milliseconds timeout) {
+  std::lock_guard lock(mutex_);
+  if (lost_ || hello_.empty() || now - last_live_ < timeout) return;
+  lost_ = true;
+  silent_ = true;
+  announce(true, "no message from the origin for " + std::to_string(timeout.count()) + " ms");
+}
+
+void EdgeSync::announce(bool lost, const std::string& detail) {
+  channel_->set_feed_state(lost ? relay::FeedState::Lost : relay::FeedState::Live);
+  proto::FeedStatus status;
+  status.lost = lost;
+  status.seq = last_frame_seq_;
+  status.server_time_ms = unix_ms();
+  status.detail = detail;
+  channel_->publish_control(proto::to_json(proto::ControlMessage{status}));
+  relay::log_event(lost ? "feed_lost" : "feed_back", channel_->name() + ": " + detail);
+}
+
+void EdgeSync::reject(const std::string& why) {
+  // Logged sparingly: a hostile publisher must not flood the log either.
+  if (stats_.rejected++ < 10 || stats_.rejected % 1000 == 0)
+    relay::log_event("nats_message_rejected", channel_->name() + ": " + why);
+}
+
+bool EdgeSync::has_hello() const {
+  std::lock_guard lock(mutex_);
+  return !hello_.empty();
+}
+
+bool EdgeSync::resync_pending() const {
+  std::lock_guard lock(mutex_);
+  return buffering_;
+}
+
+EdgeSyncStats EdgeSync::stats() const {
+  std::lock_guard lock(mutex_);
+  return stats_;
+}
+
+}  // namespace mc::nats

@@ -1,0 +1,184 @@
+#include "server/nats/nats_link.hpp"
+
+#include <nats/nats.h>
+
+#include <chrono>
+
+namespace mc::nats {
+namespace {
+
+std::string status_text(natsStatus s) {
+  std::string text = natsStatus_GetText(s);
+  natsStatus last = NATS_OK;
+  const char* detail = nats_GetLastError(&last);
+  if (detail && *detail) text += std::string(": ") + detail;
+  return text;
+}
+
+constexpr auto kCloseWait = std::chrono::seconds(3);
+
+}  // namespace
+
+struct NatsLink::Sub {
+  Handler handler;
+  natsSubscription* sub = nullptr;
+  std::mutex mutex;
+  std::condition_variable cv;
+  bool complete = false;
+
+  static void on_message(natsConnection*, natsSubscription*, natsMsg* msg, void* closure) {
+    auto* self = static_cast<Sub*>(closure);
+    self->handler(natsMsg_GetSubject(msg),
+                  std::string_view(natsMsg_GetData(msg), static_cast<std::size_t>(natsMsg_GetDataLength(msg))));
+    natsMsg_Destroy(msg);
+  }
+  static void on_complete(void* closure) {
+    auto* self = static_cast<Sub*>(closure);
+    std::lock_guard lock(self->mutex);
+    self->complete = true;
+    self->cv.notify_all();
+  }
+};
+
+NatsLink::NatsLink(Events events) : events_(std::move(events)) {}
+
+std::unique_ptr<NatsLink> NatsLink::open(const NatsConfig& config, const std::string& name, Events events,
+                                         bool buffer_while_reconnecting, std::string& error) {
+  std::unique_ptr<NatsLink> link(new NatsLink(std::move(events)));
+  natsOptions* opts = nullptr;
+  natsStatus s = natsOptions_Create(&opts);
+  if (s == NATS_OK) s = natsOptions_SetURL(opts, config.url.c_str());
+  if (s == NATS_OK) s = natsOptions_SetName(opts, name.c_str());
+  // Forever, at a steady pace: a NATS node that comes back is found again.
+  if (s == NATS_OK) s = natsOptions_SetMaxReconnect(opts, -1);
+  if (s == NATS_OK) s = natsOptions_SetReconnectWait(opts, config.reconnect_wait.count());
+  if (s == NATS_OK) s = natsOptions_SetRetryOnFailedConnect(opts, true, &NatsLink::on_connected, link.get());
+  if (s == NATS_OK) s = natsOptions_SetReconnectedCB(opts, &NatsLink::on_connected, link.get());
+  if (s == NATS_OK) s = natsOptions_SetDisconnectedCB(opts, &NatsLink::on_disconnected, link.get());
+  if (s == NATS_OK) s = natsOptions_SetClosedCB(opts, &NatsLink::on_closed, link.get());
+  // A node that vanishes without closing its sockets is noticed in ~6 s.
+  if (s == NATS_OK) s = natsOptions_SetPingInterval(opts, 2000);
+  if (s == NATS_OK) s = natsOptions_SetMaxPingsOut(opts, 3);
+  if (s == NATS_OK && !buffer_while_reconnecting) s = natsOptions_SetReconnectBufSize(opts, 1);
+  if (s != NATS_OK) {
+    error = "NATS options: " + status_text(s);
+    natsOptions_Destroy(opts);
+    return nullptr;
+  }
+  s = natsConnection_Connect(&link->conn_, opts);
+  natsOptions_Destroy(opts);
+  if (s != NATS_OK && s != NATS_NOT_YET_CONNECTED) {
+    error = "NATS connect to " + config.url + ": " + status_text(s);
+    return nullptr;
+  }
+  s = natsConnection_JetStream(&link->js_, link->conn_, nullptr);
+  if (s != NATS_OK) {
+    error = "NATS JetStream context: " + status_text(s);
+    return nullptr;
+  }
+  if (natsConnection_Status(link->conn_) == NATS_CONN_STATUS_CONNECTED) on_connected(link->conn_, link.get());
+  return link;
+}
+
+NatsLink::~NatsLink() {
+  for (auto& sub : subs_) {
+    natsSubscription_Unsubscribe(sub->sub);
+    std::unique_lock lock(sub->mutex);
+    sub->cv.wait_for(lock, kCloseWait, [&] { return sub->complete; });
+  }
+  if (js_) jsCtx_Destroy(js_);
+  if (conn_) {
+    natsConnection_Close(conn_);
+    {
+      std::unique_lock lock(mutex_);
+      closed_cv_.wait_for(lock, kCloseWait, [&] { return closed_; });
+    }
+    natsConnection_Destroy(conn_);
+  }
+  for (auto& sub : subs_) natsSubscription_Destroy(sub->sub);
+}
+
+void NatsLink::on_connected(natsConnection*, void* self) {
+  auto* link = static_cast<NatsLink*>(self);
+  link->connected_ = true;
+  if (link->events_.connected) link->events_.connected();
+}
+
+void NatsLink::on_disconnected(natsConnection*, void* self) {
+  auto* link = static_cast<NatsLink*>(self);
+  link->connected_ = false;
+  if (link->events_.disconnected) link->events_.disconnected();
+}
+
+void NatsLink::on_closed(natsConnection*, void* self) {
+  auto* link = static_cast<NatsLink*>(self);
+  link->connected_ = false;
+  std::lock_guard lock(link->mutex_);
+  link->closed_ = true;
+  link->closed_cv_.notify_all();
+}
+
+bool NatsLink::publish(const std::string& subject, std::string_view data) {
+  if (!connected_) return false;
+  return natsConnection_Publish(conn_, subject.c_str(), data.data(), static_cast<int>(data.size())) == NATS_OK;
+}
+
+bool NatsLink::subscribe(const std::string& subject, Handler handler, std::string& error) {
+  auto sub = std::make_unique<Sub>();
+  sub->handler = std::move(handler);
+  natsStatus s = natsConnection_Subscribe(&sub->sub, conn_, subject.c_str(), &Sub::on_message, sub.get());
+  if (s == NATS_OK) s = natsSubscription_SetOnCompleteCB(sub->sub, &Sub::on_complete, sub.get());
+  if (s != NATS_OK) {
+    error = "NATS subscribe " + subject + ": " + status_text(s);
+    if (sub->sub) natsSubscription_Destroy(sub->sub);
+    return false;
+  }
+  std::lock_guard lock(mutex_);
+  subs_.push_back(std::move(sub));
+  return true;
+}
+
+bool NatsLink::ensure_last_per_subject_stream(const std::string& stream, const std::string& subjects, int replicas,
+                                              std::string& error) {
+  jsStreamConfig cfg;
+  jsStreamConfig_Init(&cfg);
+  const char* subject_list[] = {subjects.c_str()};
+  cfg.Name = stream.c_str();
+  cfg.Subjects = subject_list;
+  cfg.SubjectsLen = 1;
+  cfg.MaxMsgsPerSubject = 1;  // the latest keyframe of each game, nothing older
+  cfg.Storage = js_FileStorage;
+  cfg.Replicas = replicas;
+  jsOptions o;
+  jsOptions_Init(&o);
+  o.Wait = 3000;
+  jsErrCode jerr = static_cast<jsErrCode>(0);
+  natsStatus s = js_AddStream(nullptr, js_, &cfg, &o, &jerr);
+  if (s != NATS_OK && jerr == JSStreamNameExistErr) s = js_UpdateStream(nullptr, js_, &cfg, &o, &jerr);
+  if (s != NATS_OK) {
+    error = "JetStream stream " + stream + ": " + status_text(s) +
+            (jerr ? " (JetStream error " + std::to_string(static_cast<int>(jerr)) + ")" : "");
+    return false;
+  }
+  return true;
+}
+
+NatsLink::Fetch NatsLink::last_message(const std::string& stream, const std::string& subject, std::string& out,
+                                       std::string& error) {
+  jsOptions o;
+  jsOptions_Init(&o);
+  o.Wait = 2000;
+  jsErrCode jerr = static_cast<jsErrCode>(0);
+  natsMsg* msg = nullptr;
+  const natsStatus s = js_GetLastMsg(&msg, js_, stream.c_str(), subject.c_str(), &o, &jerr);
+  if (s == NATS_OK) {
+    out.assign(natsMsg_GetData(msg), static_cast<std::size_t>(natsMsg_GetDataLength(msg)));
+    natsMsg_Destroy(msg);
+    return Fetch::Found;
+  }
+  if (s == NATS_NOT_FOUND || jerr == JSNoMessageFoundErr || jerr == JSStreamNotFoundErr) return Fetch::NotFound;
+  error = "JetStream get " + subject + ": " + status_text(s);
+  return Fetch::Failed;
+}
+
+}  // namespace mc::nats
