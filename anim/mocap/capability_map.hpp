@@ -38,7 +38,7 @@ struct CapabilityParams {
   MapGrid grid;
   int start_node = 0;              // graph node of the start pose
   int max_depth = 300;             // frames per walk (10 s at 30 Hz)
-  int iterations = 10000;          // walks
+  int iterations = 50000;          // walks (about 0.5 s on the CMU graph)
   std::uint64_t seed = 1;          // walk i uses its own stream derived from (seed, i)
   float alpha = 0;                 // goal weight (the paper ran alpha = 0), frames per m^2
   std::vector<std::uint8_t> obstacles;  // grid.cells() flags, 1 = blocked; empty = none

@@ -1,5 +1,6 @@
 #include "anim/mocap/mocap_blob.hpp"
 
+#include <cmath>
 #include <cstring>
 
 namespace mc::anim::mocap {
@@ -121,6 +122,49 @@ bool deserialize_graph(std::string_view bytes, MotionGraph& g, std::string& erro
     if (g.targets[e] >= g.nodes.size()) return bad("edge to a node that does not exist");
   }
   if (!r.done()) return bad("trailing bytes");
+  return true;
+}
+
+}  // namespace mc::anim::mocap
+
+#include "anim/mocap/capability_map.hpp"
+
+namespace mc::anim::mocap {
+
+namespace {
+constexpr char kMapMagic[8] = {'M', 'C', 'C', 'M', 'A', 'P', '0', '1'};
+}
+
+std::string serialize_map(const CapabilityMap& m) {
+  Writer w;
+  w.out.append(kMapMagic, sizeof(kMapMagic));
+  w.put<std::int32_t>(m.grid.width);
+  w.put<std::int32_t>(m.grid.height);
+  w.put<float>(m.grid.cell);
+  w.put<float>(m.grid.origin_x);
+  w.put<float>(m.grid.origin_y);
+  w.put<std::int32_t>(m.iterations);
+  for (float c : m.cost) w.put<float>(c);
+  return w.out;
+}
+
+bool deserialize_map(std::string_view bytes, CapabilityMap& m, std::string& error) {
+  m = CapabilityMap();
+  auto bad = [&](const char* what) { error = std::string("map blob: ") + what; m = CapabilityMap(); return false; };
+  if (bytes.size() < sizeof(kMapMagic) || std::memcmp(bytes.data(), kMapMagic, sizeof(kMapMagic)) != 0) return bad("bad magic");
+  Reader r(bytes.substr(sizeof(kMapMagic)));
+  if (!r.get(m.grid.width) || !r.get(m.grid.height) || !r.get(m.grid.cell) || !r.get(m.grid.origin_x) ||
+      !r.get(m.grid.origin_y) || !r.get(m.iterations))
+    return bad("truncated header");
+  if (m.grid.width < 1 || m.grid.height < 1 || m.grid.width > 4096 || m.grid.height > 4096 || !(m.grid.cell > 0) ||
+      !std::isfinite(m.grid.origin_x) || !std::isfinite(m.grid.origin_y) || !std::isfinite(m.grid.cell))
+    return bad("bad grid");
+  m.cost.resize(static_cast<std::size_t>(m.grid.cells()));
+  for (auto& c : m.cost)
+    if (!r.get(c) || std::isnan(c) || c < 0) return bad("bad or truncated costs");
+  if (!r.done()) return bad("trailing bytes");
+  m.best_iteration.assign(m.cost.size(), 0);
+  m.best_step.assign(m.cost.size(), 0);
   return true;
 }
 

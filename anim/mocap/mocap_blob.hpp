@@ -21,3 +21,10 @@ std::string serialize_graph(const MotionGraph& graph);
 bool deserialize_graph(std::string_view bytes, MotionGraph& graph, std::string& error);
 
 }  // namespace mc::anim::mocap
+
+namespace mc::anim::mocap {
+struct CapabilityMap;
+// The cost grid of a map (no convergence history).
+std::string serialize_map(const CapabilityMap& map);
+bool deserialize_map(std::string_view bytes, CapabilityMap& map, std::string& error);
+}  // namespace mc::anim::mocap

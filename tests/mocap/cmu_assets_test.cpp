@@ -1,0 +1,47 @@
+// The whole pipeline on the real CMU clips: loaders, graph, pruning, map.
+#include "anim/mocap/io/asset_cache.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "anim/mocap/reach_overlay.hpp"
+
+using namespace mc::anim::mocap;
+
+TEST(CmuAssets, GraphAndMapFromTheRealClips) {
+  io::AssetOptions o;
+  o.clips.dir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap";
+  o.map.start_node = -1;
+  o.cache_dir = MATCHCAST_MOCAP_CACHE;
+  io::MocapAssets a;
+  std::string error;
+  ASSERT_TRUE(io::load_or_build_assets(o, a, error)) << error;
+  const auto& s = a.graph.stats;
+  EXPECT_GT(s.frames, 2000);                // 17 clips at 30 Hz
+  EXPECT_LT(s.nodes_after, s.frames);       // pruning removed dead ends
+  EXPECT_GT(s.nodes_after, s.frames / 2);   // but kept most of the data
+  EXPECT_GT(s.transitions_after, 500);
+  // Both subjects (BVH subject 10 and ASF subject 16) are in the kept component.
+  bool bvh = false, asf = false;
+  for (const auto& n : a.graph.nodes) {
+    const auto& name = a.graph.clip_names[n.clip];
+    bvh = bvh || name.find(".bvh") != std::string::npos;
+    asf = asf || name.find(".amc") != std::string::npos;
+  }
+  EXPECT_TRUE(bvh);
+  EXPECT_TRUE(asf);
+  // The human map is asymmetric: 3 m behind costs more than 3 m ahead.
+  const auto& g = a.map.grid;
+  const float ahead = a.map.cost[static_cast<std::size_t>(g.index(3.1f, 0.1f))];
+  const float behind = a.map.cost[static_cast<std::size_t>(g.index(-2.9f, 0.1f))];
+  ASSERT_NE(ahead, kUnreached);
+  EXPECT_GT(behind, 1.5f * ahead);
+  // Loading again gives the same graph from the cache.
+  io::MocapAssets b;
+  ASSERT_TRUE(io::load_or_build_assets(o, b, error)) << error;
+  EXPECT_TRUE(b.from_cache);
+  EXPECT_EQ(b.graph.targets, a.graph.targets);
+  EXPECT_EQ(b.map.cost, a.map.cost);
+  EXPECT_EQ(b.map_params.start_node, a.map_params.start_node);
+}
