@@ -1,0 +1,408 @@
+// The real viewer, headless under Xvfb (Mesa llvmpipe), against a live
+// matchcast-server started here on port 0 with the bundled game, and
+// against the recording that server wrote. Each screenshot is checked:
+// it is not blank, the players' shirts are where the frame puts them
+// (their chests projected with the viewer's own camera maths), grass is
+// where no player is, and two camera modes give different pictures.
+// The screenshots are kept in test-output/viewer/ to be looked at.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "proto/control_messages.hpp"
+#include "proto/frame_codec.hpp"
+#include "proto/hello.hpp"
+#include "server/record/recording_reader.hpp"
+#include "tests/relay/ws_test_client.hpp"
+#include "viewer/camera.hpp"
+#include "viewer/player_model.hpp"
+#include "viewer/png.hpp"
+
+extern char** environ;
+
+namespace mc::viewer {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kOut = MATCHCAST_OUTPUT_DIR;
+const std::string kLog = std::string(MATCHCAST_SOURCE_DIR) + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
+constexpr int kWidth = 960, kHeight = 540;
+
+// A child process: stdout to a pipe (read_fd) or a file, stderr to a file.
+struct Child {
+  pid_t pid = -1;
+  int read_fd = -1;
+};
+
+Child spawn(const std::vector<std::string>& args, const std::string& log, bool pipe_stdout, const std::string& cwd) {
+  Child c;
+  int fds[2] = {-1, -1};
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (pipe_stdout) {
+    if (pipe(fds) != 0) return c;
+    posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
+    posix_spawn_file_actions_addclose(&actions, fds[0]);
+  } else {
+    posix_spawn_file_actions_addopen(&actions, 1, (log + ".out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  }
+  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  if (posix_spawn(&c.pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) c.pid = -1;
+  posix_spawn_file_actions_destroy(&actions);
+  if (pipe_stdout) {
+    close(fds[1]);
+    c.read_fd = fds[0];
+  }
+  return c;
+}
+
+// Exit code, or -1 after killing it when it outlives `seconds`.
+int wait_for(pid_t pid, double seconds) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  while (std::chrono::steady_clock::now() < end) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return -1;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// matchcast-server on 127.0.0.1 port 0; stopped with SIGTERM.
+class Server {
+ public:
+  explicit Server(const std::string& record_dir) {
+    fs::create_directories(kOut);
+    child_ = spawn({MATCHCAST_SERVER, "--rcg", kLog, "--port", "0", "--threads", "1", "--speed", "2",
+                    "--web", std::string(MATCHCAST_SOURCE_DIR) + "/web", "--record-dir", record_dir},
+                   kOut + "/server.log", true, kOut);
+    if (child_.pid < 0) return;
+    // "Matchcast: open http://127.0.0.1:PORT/"
+    std::string text;
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (port_ == 0 && std::chrono::steady_clock::now() < end) {
+      pollfd p{child_.read_fd, POLLIN, 0};
+      if (poll(&p, 1, 100) <= 0) continue;
+      char buf[256];
+      const ssize_t n = read(child_.read_fd, buf, sizeof buf);
+      if (n <= 0) break;
+      text.append(buf, static_cast<std::size_t>(n));
+      const auto at = text.find("127.0.0.1:");
+      if (at != std::string::npos && text.find('/', at) != std::string::npos)
+        port_ = static_cast<std::uint16_t>(std::stoi(text.substr(at + 10)));
+    }
+  }
+  ~Server() { stop(); }
+  std::uint16_t port() const { return port_; }
+  int stop() {
+    if (child_.pid < 0) return 0;
+    kill(child_.pid, SIGTERM);
+    const int code = wait_for(child_.pid, 20);
+    close(child_.read_fd);
+    child_.pid = -1;
+    return code;
+  }
+
+ private:
+  Child child_;
+  std::uint16_t port_ = 0;
+};
+
+// A spectator of our own: every frame the relay sends, decoded, by seq.
+class Spectator {
+ public:
+  explicit Spectator(std::uint16_t port) : client_(port) {
+    thread_ = std::thread([this] { run(); });
+  }
+  ~Spectator() {
+    stop_ = true;
+    thread_.join();
+  }
+  bool frame(std::uint32_t seq, PoseFrame& out) {
+    std::lock_guard lock(mutex_);
+    auto it = frames_.find(seq);
+    if (it == frames_.end()) return false;
+    out = it->second;
+    return true;
+  }
+  int latest_time() {
+    std::lock_guard lock(mutex_);
+    return frames_.empty() ? -1 : frames_.rbegin()->second.time;
+  }
+  proto::Hello hello() {
+    std::lock_guard lock(mutex_);
+    return hello_;
+  }
+
+ private:
+  void run() {
+    std::unique_ptr<proto::FrameDecoder> decoder;
+    auto f = std::make_unique<PoseFrame>();
+    std::string error;
+    while (!stop_) {
+      relay::testing::Received m;
+      try {
+        m = client_.read(std::chrono::seconds(5));
+      } catch (const std::exception&) {
+        return;
+      }
+      if (!m.binary) {
+        proto::Hello h;
+        if (proto::control_type(m.data, error) == "hello" && proto::hello_from_json(m.data, h, error)) {
+          std::lock_guard lock(mutex_);
+          hello_ = h;
+          decoder = std::make_unique<proto::FrameDecoder>(h.skeleton);
+        }
+      } else if (decoder && decoder->decode(m.data, *f, error)) {
+        std::lock_guard lock(mutex_);
+        frames_[f->seq] = *f;
+      }
+    }
+  }
+  relay::testing::WsTestClient client_;
+  std::thread thread_;
+  std::atomic<bool> stop_{false};
+  std::mutex mutex_;
+  std::map<std::uint32_t, PoseFrame> frames_;
+  proto::Hello hello_;
+};
+
+struct Shot {
+  Image image;
+  nlohmann::json report;
+};
+
+// Runs the viewer under xvfb-run; the PNG and its report go to test-output/viewer/NAME.*.
+Shot screenshot(const std::string& source, int at, const std::string& camera, const std::string& name,
+                const std::vector<std::string>& extra = {}) {
+  const std::string png = kOut + "/" + name + ".png", json = kOut + "/" + name + ".json";
+  fs::remove(png);
+  std::vector<std::string> args = {MATCHCAST_XVFB_RUN, "-a", "-s", "-screen 0 1280x1024x24", MATCHCAST_VIEWER,
+                                   source, "--screenshot", png, "--at", std::to_string(at), "--camera", camera,
+                                   "--width", std::to_string(kWidth), "--height", std::to_string(kHeight),
+                                   "--report", json, "--timeout", "60"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const Child c = spawn(args, kOut + "/" + name + ".log", false, kOut);
+  Shot shot;
+  EXPECT_GT(c.pid, 0);
+  if (c.pid <= 0) return shot;
+  const int code = wait_for(c.pid, 120);
+  EXPECT_EQ(code, 0) << name << ": " << slurp(kOut + "/" + name + ".log");
+  std::string error;
+  EXPECT_TRUE(read_png(png, shot.image, error)) << error;
+  std::ifstream in(json);
+  shot.report = nlohmann::json::parse(in, nullptr, false);
+  return shot;
+}
+
+// Not blank: many colours, none covering almost everything.
+void expect_not_blank(const Image& image, const std::string& name) {
+  std::map<std::uint32_t, std::size_t> counts;
+  for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3)
+    ++counts[(image.rgb[i] >> 3) << 10 | (image.rgb[i + 1] >> 3) << 5 | (image.rgb[i + 2] >> 3)];
+  std::size_t top = 0;
+  for (const auto& [c, n] : counts) top = std::max(top, n);
+  EXPECT_GE(counts.size(), 40u) << name << " has too few colours";
+  EXPECT_LT(static_cast<double>(top) / (image.width * image.height), 0.8) << name << " is mostly one colour";
+}
+
+// A pixel in the kit colour `shirt` (0..1), lit between 40 % and 110 %.
+bool looks_like(const std::uint8_t* p, glm::vec3 shirt) {
+  const glm::vec3 s = shirt * 255.0f, q(p[0], p[1], p[2]);
+  const float k = glm::dot(q, s) / glm::dot(s, s);
+  return k >= 0.4f && k <= 1.1f && glm::length(q - k * s) <= 0.12f * glm::length(s) + 12.0f;
+}
+
+bool found_near(const Image& image, glm::vec2 px, glm::vec3 color, int radius) {
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const int x = static_cast<int>(std::lround(px.x)) + dx, y = static_cast<int>(std::lround(px.y)) + dy;
+      if (x >= 0 && y >= 0 && x < image.width && y < image.height && looks_like(image.at(x, y), color)) return true;
+    }
+  return false;
+}
+
+// Projects every field player's chest with the viewer's camera for this
+// frame and looks for his shirt colour there; grass points away from every
+// player must not look like a shirt (so the check can fail).
+void expect_players_where_the_frame_puts_them(const Shot& shot, const PoseFrame& f, const proto::Hello& hello,
+                                              CameraMode mode, const std::string& name) {
+  Camera camera;
+  camera.set_mode(mode);
+  CameraTarget target;
+  target.ball = to_scene(f.ball.x, f.ball.y, f.ball.z);
+  camera.update(0.0, target, static_cast<float>(kWidth) / kHeight, hello.field);
+  ASSERT_TRUE(shot.report.is_object()) << name;
+  EXPECT_NEAR(shot.report["camera"]["eye"][0].get<float>(), camera.eye().x, 0.01) << name;
+  EXPECT_NEAR(shot.report["camera"]["eye"][2].get<float>(), camera.eye().z, 0.01) << name;
+
+  const PlayerModel model(hello.skeleton);
+  std::vector<glm::mat4> joints;
+  std::vector<glm::vec2> chest(kMaxPlayers, glm::vec2(-1000.0f));
+  for (int i = 0; i < kMaxPlayers; ++i) {
+    if (!player_visible(f.players[i]) || !model.joints(f.players[i], joints)) continue;
+    camera.project(model.segment_center(joints, model.chest_joint()), kWidth, kHeight, chest[i]);
+  }
+  int eligible = 0, matched = 0, grass_checked = 0, grass_matched = 0;
+  std::string missed;
+  for (int i = 0; i < kMaxPlayers; ++i) {
+    const PlayerPose& p = f.players[i];
+    if (!player_visible(p) || (p.state & state_bits::kGoalie)) continue;
+    if (chest[i].x < 10 || chest[i].y < 40 || chest[i].x > kWidth - 10 || chest[i].y > kHeight - 10) continue;
+    bool alone = true;
+    for (int j = 0; j < kMaxPlayers; ++j)
+      if (j != i && glm::length(chest[j] - chest[i]) < 16.0f) alone = false;
+    if (!alone) continue;
+    const glm::vec3 shirt = team_kit(p.side == Side::Right ? hello.right : hello.left, p.side, false).shirt;
+    ++eligible;
+    if (found_near(shot.image, chest[i], shirt, 3))
+      ++matched;
+    else
+      missed += " " + std::string(p.side == Side::Left ? "L" : "R") + std::to_string(p.unum);
+    // Grass 6 m beside him, away on screen from every player and number label.
+    const float gx = p.x + (p.x > 0 ? -6.0f : 6.0f), gy = p.y;
+    glm::vec2 g;
+    if (!camera.project(to_scene(gx, gy, 0.0f), kWidth, kHeight, g) || g.x < 5 || g.y < 60 || g.x > kWidth - 5 ||
+        g.y > kHeight - 60)
+      continue;
+    bool empty = true;
+    for (int j = 0; j < kMaxPlayers; ++j) {
+      glm::vec2 label;
+      const PlayerPose& q = f.players[j];
+      if (!player_visible(q)) continue;
+      if (glm::length(chest[j] - g) < 20.0f) empty = false;
+      if (camera.project(to_scene(q.x, q.y, q.z + 1.15f), kWidth, kHeight, label) && glm::length(label - g) < 25.0f)
+        empty = false;
+    }
+    if (!empty) continue;
+    ++grass_checked;
+    if (found_near(shot.image, g, shirt, 1)) ++grass_matched;
+  }
+  EXPECT_GE(eligible, 4) << name << ": too few players to check";
+  EXPECT_GE(matched, eligible * 3 / 4 + (eligible * 3 % 4 ? 1 : 0)) << name << ": shirts missing at" << missed;
+  EXPECT_GE(grass_checked, 2) << name;
+  EXPECT_EQ(grass_matched, 0) << name << ": shirt colours where there is only grass";
+}
+
+double fraction_different(const Image& a, const Image& b) {
+  if (a.rgb.size() != b.rgb.size() || a.rgb.empty()) return 0;
+  std::size_t diff = 0;
+  for (std::size_t i = 0; i + 2 < a.rgb.size(); i += 3)
+    if (std::abs(a.rgb[i] - b.rgb[i]) + std::abs(a.rgb[i + 1] - b.rgb[i + 1]) + std::abs(a.rgb[i + 2] - b.rgb[i + 2]) > 40)
+      ++diff;
+  return static_cast<double>(diff) / (a.rgb.size() / 3);
+}
+
+TEST(Screenshot, LiveRelay) {
+  Server server("");
+  ASSERT_GT(server.port(), 0) << slurp(kOut + "/server.log");
+  Spectator spectator(server.port());
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (spectator.latest_time() < 0 && std::chrono::steady_clock::now() < end)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_GE(spectator.latest_time(), 0) << "no frame from the relay";
+  // A moment ahead of the stream: the viewer draws the first frame at or after it.
+  const int at = spectator.latest_time() + 20;
+  const std::string url = "ws://127.0.0.1:" + std::to_string(server.port()) + "/ws";
+  const Shot broadcast = screenshot(url, at, "broadcast", "live-broadcast");
+  const Shot top = screenshot(url, at, "top", "live-top");
+  for (const auto* shot : {&broadcast, &top}) {
+    const std::string name = shot == &broadcast ? "live-broadcast" : "live-top";
+    ASSERT_TRUE(shot->report.is_object()) << name;
+    expect_not_blank(shot->image, name);
+    PoseFrame f;
+    ASSERT_TRUE(spectator.frame(shot->report["seq"].get<std::uint32_t>(), f)) << name << ": frame not seen";
+    EXPECT_GE(f.time, at);
+    expect_players_where_the_frame_puts_them(*shot, f, spectator.hello(),
+                                             shot == &broadcast ? CameraMode::Broadcast : CameraMode::Top, name);
+  }
+  EXPECT_GT(fraction_different(broadcast.image, top.image), 0.2);
+}
+
+TEST(Screenshot, RecordingOfTheLiveGame) {
+  const std::string dir = kOut + "/recordings";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  {
+    Server server(dir);
+    ASSERT_GT(server.port(), 0) << slurp(kOut + "/server.log");
+    std::this_thread::sleep_for(std::chrono::seconds(6));  // 12 s of the game at speed 2
+    EXPECT_EQ(server.stop(), 0) << slurp(kOut + "/server.log");
+  }
+  std::string path;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.path().extension() == ".mcrec") path = e.path().string();
+  ASSERT_FALSE(path.empty()) << "the server wrote no recording in " << dir;
+
+  record::RecordingReader reader;
+  std::string error;
+  ASSERT_TRUE(reader.open(path, error)) << error;
+  EXPECT_FALSE(reader.recovered()) << "the server did not close its recording";
+  PoseFrame f;
+  std::vector<int> times;
+  while (reader.next(f, error)) times.push_back(f.time);
+  ASSERT_GE(times.size(), 100u) << error;
+  const int at = times[times.size() / 2];
+  ASSERT_TRUE(reader.seek(at, f, error)) << error;
+
+  const Shot broadcast = screenshot(path, at, "broadcast", "recording-broadcast");
+  const Shot top = screenshot(path, at, "top", "recording-top");
+  const Shot follow = screenshot(path, at, "follow", "recording-follow", {"--follow", "l10"});
+  for (const auto* shot : {&broadcast, &top, &follow}) {
+    ASSERT_TRUE(shot->report.is_object());
+    EXPECT_EQ(shot->report["seq"].get<std::uint32_t>(), f.seq);  // exactly the frame the file has there
+    expect_not_blank(shot->image, "recording");
+  }
+  expect_players_where_the_frame_puts_them(broadcast, f, reader.hello(), CameraMode::Broadcast, "recording-broadcast");
+  expect_players_where_the_frame_puts_them(top, f, reader.hello(), CameraMode::Top, "recording-top");
+  EXPECT_GT(fraction_different(broadcast.image, top.image), 0.2);
+  EXPECT_GT(fraction_different(broadcast.image, follow.image), 0.2);
+}
+
+TEST(Screenshot, ARefusedRelayOrACorruptRecordingFailsWithAClearMessage) {
+  fs::create_directories(kOut);
+  const std::string bad = kOut + "/corrupt.mcrec";
+  std::ofstream(bad, std::ios::binary) << std::string(3000, '\x42');
+  for (const auto& [source, expected] : std::vector<std::pair<std::string, std::string>>{
+           {bad, "cannot open recording"}, {"ws://127.0.0.1:1/ws", "refused"}}) {
+    const std::string png = kOut + "/must-not-exist.png", log = kOut + "/refused.log";
+    fs::remove(png);
+    const Child c = spawn({MATCHCAST_XVFB_RUN, "-a", MATCHCAST_VIEWER, source, "--screenshot", png, "--at", "0",
+                           "--timeout", "3"},
+                          log, false, kOut);
+    ASSERT_GT(c.pid, 0);
+    EXPECT_EQ(wait_for(c.pid, 60), 2) << slurp(log);
+    EXPECT_NE(slurp(log).find(expected), std::string::npos) << slurp(log);
+    EXPECT_FALSE(fs::exists(png));
+  }
+}
+
+}  // namespace
+}  // namespace mc::viewer

@@ -1,0 +1,362 @@
+#include "viewer/app.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <thread>
+
+#include "viewer/gl_util.hpp"  // before GLFW: the GL prototypes
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <nlohmann/json.hpp>
+
+#include "viewer/hud.hpp"
+#include "viewer/interpolate.hpp"
+#include "viewer/png.hpp"
+#include "viewer/recording_source.hpp"
+#include "viewer/renderer.hpp"
+#include "viewer/ws_source.hpp"
+
+namespace mc::viewer {
+namespace {
+
+App* app_of(GLFWwindow* w) { return static_cast<App*>(glfwGetWindowUserPointer(w)); }
+
+std::string slot_name(int slot) {
+  if (slot < 0) return "";
+  return (slot < kPlayersPerSide ? "L" : "R") + std::to_string(slot % kPlayersPerSide + 1);
+}
+
+}  // namespace
+
+App::App(ViewerOptions options)
+    : options_(std::move(options)), sample_(std::make_unique<Sample>()), frame_(std::make_unique<PoseFrame>()) {
+  labels_ = options_.labels;
+  camera_.set_mode(options_.camera);
+  Side side;
+  int unum;
+  if (parse_player(options_.follow, side, unum)) selected_ = player_index(side, unum);
+}
+
+App::~App() {
+  if (source_) source_->stop();
+  renderer_.reset();
+  hud_.reset();
+  if (window_) glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+bool App::make_source(bool screenshot, std::string& error) {
+  if (options_.is_file) {
+    RecordingOptions ro;
+    ro.speed = options_.speed;
+    ro.loop = options_.loop;
+    if (screenshot) {
+      ro.start_time = options_.at;
+      ro.start_paused = true;
+    }
+    source_ = std::make_unique<RecordingSource>(options_.source, buffer_, ro);
+  } else {
+    WsUrl url;
+    if (!parse_ws_url(options_.source, url, error)) return false;
+    source_ = std::make_unique<WsSource>(url, buffer_);
+  }
+  source_->start();
+  return true;
+}
+
+bool App::open_window(bool visible, std::string& error) {
+  glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
+  if (!glfwInit()) {
+    error = "cannot open a window (no display? DISPLAY is \"" +
+            std::string(std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "") +
+            "\"); headless, run it under xvfb-run -a";
+    return false;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
+  if (visible) glfwWindowHint(GLFW_SAMPLES, 4);
+  GLFWmonitor* monitor = options_.fullscreen && visible ? glfwGetPrimaryMonitor() : nullptr;
+  int w = options_.width, h = options_.height;
+  if (monitor) {
+    const GLFWvidmode* mode = glfwGetVideoMode(monitor);
+    w = mode->width;
+    h = mode->height;
+  }
+  window_ = glfwCreateWindow(w, h, "Matchcast", monitor, nullptr);
+  if (!window_) {
+    error = "cannot create an OpenGL 3.3 core window (is Mesa's libgl1-mesa-dri installed?)";
+    return false;
+  }
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(options_.vsync ? 1 : 0);
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetKeyCallback(window_, [](GLFWwindow* win, int key, int, int action, int mods) {
+    if (action != GLFW_RELEASE) app_of(win)->on_key(key, mods);
+  });
+  glfwSetMouseButtonCallback(window_, [](GLFWwindow* win, int button, int action, int) {
+    app_of(win)->on_mouse_button(button, action);
+  });
+  glfwSetCursorPosCallback(window_, [](GLFWwindow* win, double x, double y) { app_of(win)->on_cursor(x, y); });
+  glfwSetScrollCallback(window_, [](GLFWwindow* win, double, double dy) { app_of(win)->on_scroll(dy); });
+  renderer_ = std::make_unique<Renderer>();
+  hud_ = std::make_unique<Hud>();
+  return renderer_->init(error) && hud_->init(error);
+}
+
+int App::run() {
+  std::string error;
+  const bool screenshot = !options_.screenshot.empty();
+  if (!make_source(screenshot, error) || !open_window(!screenshot, error)) {
+    std::fprintf(stderr, "matchcast-viewer: %s\n", error.c_str());
+    return 1;
+  }
+  return screenshot ? run_screenshot() : run_window();
+}
+
+void App::check_hello() {
+  meta_ = buffer_.meta();
+  if (!meta_.hello || meta_.hello_generation == hello_generation_) return;
+  hello_generation_ = meta_.hello_generation;
+  model_ = std::make_unique<PlayerModel>(meta_.hello->skeleton);
+  renderer_->set_field(meta_.hello->field);
+}
+
+int App::nearest_to_ball(const PoseFrame& f) const {
+  int best = -1;
+  float bd = 1e9f;
+  for (int i = 0; i < kMaxPlayers; ++i) {
+    if (!player_visible(f.players[i])) continue;
+    const float d = std::hypot(f.players[i].x - f.ball.x, f.players[i].y - f.ball.y);
+    if (d < bd) {
+      bd = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+CameraTarget App::camera_target(const PoseFrame& f) {
+  CameraTarget t;
+  t.ball = to_scene(f.ball.x, f.ball.y, f.ball.z);
+  const bool needs_player = camera_.mode() == CameraMode::Player || camera_.mode() == CameraMode::Follow;
+  if (needs_player && (selected_ < 0 || !player_visible(f.players[selected_]))) selected_ = nearest_to_ball(f);
+  if (selected_ >= 0 && player_visible(f.players[selected_]) && model_) {
+    const PlayerPose& p = f.players[selected_];
+    std::vector<glm::mat4> joints;
+    if (model_->joints(p, joints)) {
+      t.has_player = true;
+      t.player_root = to_scene(p.x, p.y, 0.0f);
+      t.player_heading = p.heading;
+      const glm::mat4& head = joints[static_cast<std::size_t>(model_->head_joint())];
+      t.head = glm::vec3(head[3]);
+      t.head_forward = glm::normalize(glm::vec3(head[0]));
+    }
+  }
+  return t;
+}
+
+void App::draw(const PoseFrame& f, int width, int height, double dt) {
+  const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+  camera_.update(dt, camera_target(f), aspect, meta_.hello->field);
+  const int hidden = camera_.mode() == CameraMode::Player ? selected_ : -1;
+  renderer_->draw(f, *meta_.hello, *model_, camera_, width, height, hidden, selected_);
+
+  HudInfo info;
+  const auto& hello = *meta_.hello;
+  info.left_name = hello.left.name.empty() ? "LEFT" : hello.left.name;
+  info.right_name = hello.right.name.empty() ? "RIGHT" : hello.right.name;
+  info.left_color = team_kit(hello.left, Side::Left, false).shirt;
+  info.right_color = team_kit(hello.right, Side::Right, false).shirt;
+  info.score_left = f.score_left;
+  info.score_right = f.score_right;
+  info.pen_left = meta_.pen_left;
+  info.pen_right = meta_.pen_right;
+  info.time = f.time;
+  info.play_mode = std::string(play_mode_name(f.play_mode));
+  info.camera = std::string(camera_mode_name(camera_.mode())) + " [" + camera_mode_key(camera_.mode()) + "]";
+  info.chosen = slot_name(selected_);
+  if (source_->paused()) info.playback = "PAUSED";
+  else if (source_->speed() != 1.0) info.playback = "x" + std::to_string(source_->speed()).substr(0, 4);
+  info.status = meta_.status;
+  if (labels_) {
+    std::vector<glm::mat4> joints;
+    for (int i = 0; i < kMaxPlayers; ++i) {
+      const PlayerPose& p = f.players[i];
+      if (!player_visible(p) || i == hidden) continue;
+      glm::vec2 px;
+      if (!camera_.project(to_scene(p.x, p.y, p.z + 1.15f), width, height, px)) continue;
+      const Kit kit = team_kit(p.side == Side::Right ? hello.right : hello.left, p.side,
+                               (p.state & state_bits::kGoalie) != 0);
+      // Lifted a little above the head so that it never hides the shirt.
+      info.labels.push_back({px - glm::vec2(0.0f, 8.0f), p.unum, kit.shirt, kit.number});
+    }
+  }
+  hud_->draw(info, width, height);
+}
+
+void App::cycle_player(int step) {
+  const PoseFrame& f = *frame_;
+  int slot = selected_ < 0 ? (step > 0 ? -1 : kMaxPlayers) : selected_;
+  for (int n = 0; n < kMaxPlayers; ++n) {
+    slot = (slot + step + kMaxPlayers) % kMaxPlayers;
+    if (player_visible(f.players[slot])) {
+      selected_ = slot;
+      if (camera_.mode() != CameraMode::Player && camera_.mode() != CameraMode::Follow)
+        camera_.set_mode(CameraMode::Follow);
+      return;
+    }
+  }
+}
+
+void App::on_key(int key, int mods) {
+  const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
+  switch (key) {
+    case GLFW_KEY_1: camera_.set_mode(CameraMode::Broadcast); break;
+    case GLFW_KEY_2: camera_.set_mode(CameraMode::Orbit); break;
+    case GLFW_KEY_4: camera_.set_mode(CameraMode::Player); break;
+    case GLFW_KEY_5: camera_.set_mode(CameraMode::Follow); break;
+    case GLFW_KEY_7: camera_.set_mode(CameraMode::Top); break;
+    case GLFW_KEY_C: {
+      const CameraMode order[] = {CameraMode::Broadcast, CameraMode::Orbit, CameraMode::Player,
+                                  CameraMode::Follow, CameraMode::Top};
+      int i = 0;
+      while (order[i] != camera_.mode()) ++i;
+      camera_.set_mode(order[(i + (shift ? 4 : 1)) % 5]);
+      break;
+    }
+    case GLFW_KEY_TAB: cycle_player(shift ? -1 : 1); break;
+    case GLFW_KEY_RIGHT_BRACKET: cycle_player(1); break;
+    case GLFW_KEY_LEFT_BRACKET: cycle_player(-1); break;
+    case GLFW_KEY_ESCAPE: selected_ = -1; break;
+    case GLFW_KEY_N: labels_ = !labels_; break;
+    case GLFW_KEY_SPACE:
+    case GLFW_KEY_P: source_->toggle_pause(); break;
+    case GLFW_KEY_LEFT: source_->seek_by(shift ? -60 : -10); break;
+    case GLFW_KEY_RIGHT: source_->seek_by(shift ? 60 : 10); break;
+    case GLFW_KEY_UP: source_->set_speed(std::min(8.0, source_->speed() * 2)); break;
+    case GLFW_KEY_DOWN: source_->set_speed(std::max(0.25, source_->speed() / 2)); break;
+    case GLFW_KEY_Q: glfwSetWindowShouldClose(window_, GLFW_TRUE); break;
+    default: break;
+  }
+}
+
+void App::on_mouse_button(int button, int action) {
+  if (button == GLFW_MOUSE_BUTTON_LEFT) {
+    dragging_ = action == GLFW_PRESS;
+    glfwGetCursorPos(window_, &drag_x_, &drag_y_);
+  }
+}
+
+void App::on_cursor(double x, double y) {
+  if (!dragging_) return;
+  if (camera_.mode() != CameraMode::Orbit) camera_.set_mode(CameraMode::Orbit);
+  camera_.orbit_drag(static_cast<float>(x - drag_x_), static_cast<float>(y - drag_y_));
+  drag_x_ = x;
+  drag_y_ = y;
+}
+
+void App::on_scroll(double dy) {
+  if (camera_.mode() != CameraMode::Orbit) camera_.set_mode(CameraMode::Orbit);
+  camera_.orbit_zoom(static_cast<float>(dy));
+}
+
+int App::run_window() {
+  double last = glfwGetTime();
+  while (!glfwWindowShouldClose(window_)) {
+    glfwPollEvents();
+    const double now = glfwGetTime();
+    const double dt = std::min(now - last, 0.5);
+    last = now;
+    check_hello();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_, &width, &height);
+    if (width <= 0 || height <= 0) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));  // minimised
+      continue;
+    }
+    // The playhead runs at the stream's rate (x speed for replays), apart
+    // from the network: the source thread only fills the buffer.
+    const double rate = source_->paused() ? 0.0 : source_->speed();
+    if (model_ && buffer_.sample(playhead_, dt * meta_.hello->frame_rate * rate, *sample_)) {
+      blend_frames(sample_->a, sample_->b, sample_->t, meta_.hello->skeleton.dof_count(), *frame_);
+      draw(*frame_, width, height, dt);
+    } else {
+      renderer_->clear(width, height);
+      HudInfo info;
+      info.waiting = true;
+      info.camera = std::string(camera_mode_name(camera_.mode()));
+      info.status = meta_.status.empty() ? "waiting for " + source_->describe() : meta_.status;
+      hud_->draw(info, width, height);
+    }
+    glfwSwapBuffers(window_);
+  }
+  return 0;
+}
+
+int App::run_screenshot() {
+  std::string error;
+  gl::Framebuffer target;
+  if (!target.create(options_.width, options_.height, error)) {
+    std::fprintf(stderr, "matchcast-viewer: %s\n", error.c_str());
+    return 1;
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(options_.timeout_s);
+  std::optional<PoseFrame> found;
+  while (std::chrono::steady_clock::now() < deadline) {
+    check_hello();
+    if (model_ && (found = buffer_.frame_at_time(options_.at))) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (!found) {
+    check_hello();
+    std::fprintf(stderr, "matchcast-viewer: no frame at or after cycle %d from %s within %.0f s%s%s\n",
+                 options_.at, source_->describe().c_str(), options_.timeout_s,
+                 meta_.status.empty() ? "" : ": ", meta_.status.c_str());
+    return 2;
+  }
+  check_hello();
+  *frame_ = *found;
+  target.bind();
+  camera_.snap();
+  draw(*frame_, options_.width, options_.height, 0.0);
+  glFinish();
+  Image image;
+  image.width = options_.width;
+  image.height = options_.height;
+  image.rgb = target.read_rgb();
+  if (!write_png(options_.screenshot, image, error) || (!options_.report.empty() && !write_report(*frame_, error))) {
+    std::fprintf(stderr, "matchcast-viewer: %s\n", error.c_str());
+    return 1;
+  }
+  std::printf("matchcast-viewer: wrote %s (frame %u, cycle %d, camera %s)\n", options_.screenshot.c_str(),
+              frame_->seq, frame_->time, std::string(camera_mode_name(camera_.mode())).c_str());
+  return 0;
+}
+
+bool App::write_report(const PoseFrame& f, std::string& error) const {
+  nlohmann::json j;
+  j["seq"] = f.seq;
+  j["time"] = f.time;
+  j["substep"] = f.substep;
+  j["camera"] = {{"mode", camera_mode_name(camera_.mode())},
+                 {"eye", {camera_.eye().x, camera_.eye().y, camera_.eye().z}},
+                 {"look", {camera_.look().x, camera_.look().y, camera_.look().z}},
+                 {"fov", camera_.fov_deg()}};
+  j["selected"] = selected_;
+  j["width"] = options_.width;
+  j["height"] = options_.height;
+  std::ofstream out(options_.report);
+  out << j.dump(1) << "\n";
+  if (!out) {
+    error = "cannot write " + options_.report;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace mc::viewer

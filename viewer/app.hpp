@@ -1,0 +1,68 @@
+// The viewer application: a GLFW window (or a hidden one for --screenshot),
+// the source thread, and the render loop that samples the frame buffer at
+// the display's rate, interpolates, moves the camera and draws the scene and
+// the HUD. Keys and mouse steer cameras, player choice and playback.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "viewer/camera.hpp"
+#include "viewer/frame_buffer.hpp"
+#include "viewer/options.hpp"
+#include "viewer/player_model.hpp"
+#include "viewer/source.hpp"
+
+struct GLFWwindow;
+
+namespace mc::viewer {
+
+class Renderer;
+class Hud;
+
+class App {
+ public:
+  explicit App(ViewerOptions options);
+  ~App();
+  // The process exit code: 0 ok, 1 bad arguments or no OpenGL, 2 no frame
+  // in time for --screenshot.
+  int run();
+
+  // GLFW callbacks.
+  void on_key(int key, int mods);
+  void on_mouse_button(int button, int action);
+  void on_cursor(double x, double y);
+  void on_scroll(double dy);
+
+ private:
+  bool open_window(bool visible, std::string& error);
+  bool make_source(bool screenshot, std::string& error);
+  int run_window();
+  int run_screenshot();
+  void check_hello();
+  void draw(const PoseFrame& frame, int width, int height, double dt);
+  CameraTarget camera_target(const PoseFrame& frame);
+  int nearest_to_ball(const PoseFrame& frame) const;
+  void cycle_player(int step);
+  bool write_report(const PoseFrame& frame, std::string& error) const;
+
+  ViewerOptions options_;
+  FrameBuffer buffer_;
+  std::unique_ptr<Source> source_;
+  GLFWwindow* window_ = nullptr;
+  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<Hud> hud_;
+  Camera camera_;
+  StreamMeta meta_;
+  std::unique_ptr<PlayerModel> model_;
+  std::uint64_t hello_generation_ = 0;
+  int selected_ = -1;       // player slot (player_index), -1 = none chosen
+  bool labels_ = true;
+  double playhead_ = -1;
+  std::unique_ptr<Sample> sample_;
+  std::unique_ptr<PoseFrame> frame_;
+  bool dragging_ = false;
+  double drag_x_ = 0, drag_y_ = 0;
+};
+
+}  // namespace mc::viewer

@@ -1,0 +1,219 @@
+#include "viewer/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace mc::viewer {
+namespace {
+
+const char* kVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_color;
+uniform mat4 u_mvp;
+uniform mat4 u_model;
+out vec3 v_normal;
+out vec3 v_color;
+void main() {
+  gl_Position = u_mvp * vec4(a_pos, 1.0);
+  v_normal = transpose(inverse(mat3(u_model))) * a_normal;
+  v_color = a_color;
+}
+)";
+
+// Sky light plus one sun, so that shaded sides are never black.
+const char* kFragment = R"(#version 330 core
+in vec3 v_normal;
+in vec3 v_color;
+uniform vec3 u_tint;
+uniform float u_use_tint;
+uniform float u_alpha;
+uniform float u_lit;
+out vec4 o_color;
+void main() {
+  vec3 base = mix(v_color, u_tint, u_use_tint);
+  vec3 n = normalize(v_normal);
+  float sun = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
+  float light = mix(1.0, 0.55 + 0.45 * sun, u_lit);
+  o_color = vec4(base * light, u_alpha);
+}
+)";
+
+void push(std::vector<float>& out, glm::vec3 p, glm::vec3 n, glm::vec3 c) {
+  out.insert(out.end(), {p.x, p.y, p.z, n.x, n.y, n.z, c.x, c.y, c.z});
+}
+
+std::vector<float> cube_vertices() {
+  std::vector<float> v;
+  const glm::vec3 white(1.0f);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const float s : {-1.0f, 1.0f}) {
+      glm::vec3 n(0.0f);
+      n[axis] = s;
+      const glm::vec3 u = axis == 0 ? glm::vec3(0, 1, 0) : (axis == 1 ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0));
+      const glm::vec3 w = glm::cross(n, u);
+      const glm::vec3 c = n * 0.5f;
+      const glm::vec3 a = c - u * 0.5f - w * 0.5f, b = c + u * 0.5f - w * 0.5f, d = c + u * 0.5f + w * 0.5f,
+                      e = c - u * 0.5f + w * 0.5f;
+      for (const auto& p : {a, b, d, a, d, e}) push(v, p, n, white);
+    }
+  }
+  return v;
+}
+
+std::vector<float> sphere_vertices(int rings, int sectors) {
+  std::vector<float> v;
+  const float pi = 3.14159265358979f;
+  const auto at = [&](int r, int s) {
+    const float th = pi * r / rings, ph = 2 * pi * s / sectors;
+    return glm::vec3(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
+  };
+  for (int r = 0; r < rings; ++r)
+    for (int s = 0; s < sectors; ++s) {
+      const glm::vec3 a = at(r, s), b = at(r + 1, s), c = at(r + 1, s + 1), d = at(r, s + 1);
+      for (const auto& p : {a, b, c, a, c, d}) push(v, p, p, glm::vec3(1.0f));
+    }
+  return v;
+}
+
+std::vector<float> disc_vertices(int n) {
+  std::vector<float> v;
+  const float pi = 3.14159265358979f;
+  const glm::vec3 up(0, 1, 0), c(1.0f);
+  for (int i = 0; i < n; ++i) {
+    const float a0 = 2 * pi * i / n, a1 = 2 * pi * (i + 1) / n;
+    push(v, glm::vec3(0.0f), up, c);
+    push(v, {std::cos(a1), 0, std::sin(a1)}, up, c);
+    push(v, {std::cos(a0), 0, std::sin(a0)}, up, c);
+  }
+  return v;
+}
+
+std::vector<float> flatten(const std::vector<Vertex>& in) {
+  std::vector<float> v;
+  v.reserve(in.size() * 9);
+  for (const auto& x : in) push(v, x.pos, x.normal, x.color);
+  return v;
+}
+
+const std::vector<int> kLayout = {3, 3, 3};
+
+}  // namespace
+
+Renderer::~Renderer() {
+  if (program_) glDeleteProgram(program_);
+}
+
+bool Renderer::init(std::string& error) {
+  program_ = gl::make_program(kVertex, kFragment, error);
+  if (!program_) return false;
+  u_mvp_ = glGetUniformLocation(program_, "u_mvp");
+  u_model_ = glGetUniformLocation(program_, "u_model");
+  u_tint_ = glGetUniformLocation(program_, "u_tint");
+  u_use_tint_ = glGetUniformLocation(program_, "u_use_tint");
+  u_alpha_ = glGetUniformLocation(program_, "u_alpha");
+  u_lit_ = glGetUniformLocation(program_, "u_lit");
+  auto v = cube_vertices();
+  cube_.upload(v.data(), v.size(), kLayout);
+  v = sphere_vertices(10, 16);
+  sphere_.upload(v.data(), v.size(), kLayout);
+  v = disc_vertices(20);
+  disc_.upload(v.data(), v.size(), kLayout);
+  set_field(proto::FieldGeometry{});
+  return true;
+}
+
+void Renderer::set_field(const proto::FieldGeometry& field) {
+  const PitchGeometry pitch = build_pitch(field);
+  auto v = flatten(pitch.ground);
+  ground_.upload(v.data(), v.size(), kLayout);
+  v = flatten(pitch.markings);
+  markings_.upload(v.data(), v.size(), kLayout);
+  v = flatten(pitch.center_lines);
+  center_lines_.upload(v.data(), v.size(), kLayout);
+  goals_ = pitch.goals;
+}
+
+void Renderer::clear(int width, int height) {
+  glBindVertexArray(0);
+  glViewport(0, 0, width, height);
+  glClearColor(kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void Renderer::draw_mesh(const gl::Mesh& mesh, const glm::mat4& model, const glm::vec3& color, float alpha,
+                         bool lit) {
+  const glm::mat4 mvp = view_proj_ * model;
+  glUniformMatrix4fv(u_mvp_, 1, GL_FALSE, glm::value_ptr(mvp));
+  glUniformMatrix4fv(u_model_, 1, GL_FALSE, glm::value_ptr(model));
+  glUniform3fv(u_tint_, 1, glm::value_ptr(color));
+  glUniform1f(u_use_tint_, 1.0f);
+  glUniform1f(u_alpha_, alpha);
+  glUniform1f(u_lit_, lit ? 1.0f : 0.0f);
+  mesh.draw();
+}
+
+void Renderer::draw(const PoseFrame& frame, const proto::Hello& hello, const PlayerModel& model,
+                    const Camera& camera, int width, int height, int hidden_slot, int selected_slot) {
+  clear(width, height);
+  view_proj_ = camera.projection(static_cast<float>(width) / static_cast<float>(std::max(height, 1))) *
+               camera.view();
+  glUseProgram(program_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  const glm::mat4 identity(1.0f);
+
+  // Ground with its vertex colours, then the markings and shadows on top of
+  // it without depth (they lie on the grass; everything later covers them).
+  glUniform1f(u_use_tint_, 0.0f);
+  glUniformMatrix4fv(u_mvp_, 1, GL_FALSE, glm::value_ptr(view_proj_));
+  glUniformMatrix4fv(u_model_, 1, GL_FALSE, glm::value_ptr(identity));
+  glUniform1f(u_alpha_, 1.0f);
+  glUniform1f(u_lit_, 1.0f);
+  ground_.draw();
+  glDisable(GL_DEPTH_TEST);
+  markings_.draw();
+  center_lines_.draw(GL_LINES);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  for (int i = 0; i < kMaxPlayers; ++i) {
+    const PlayerPose& p = frame.players[i];
+    if (!player_visible(p) || i == hidden_slot) continue;
+    const glm::mat4 m = glm::scale(glm::translate(identity, {p.x, 0.01f, p.y}), glm::vec3(0.45f));
+    draw_mesh(disc_, m, glm::vec3(0.0f), 0.28f, false);
+    if (i == selected_slot) {
+      // The chosen player's ring, like the page's.
+      const glm::mat4 r = glm::scale(glm::translate(identity, {p.x, 0.012f, p.y}), glm::vec3(0.75f));
+      draw_mesh(disc_, r, glm::vec3(1.0f), 0.55f, false);
+    }
+  }
+  const float bh = std::max(frame.ball.z, 0.0f);
+  const float shadow = std::clamp(1.0f - bh / 10.0f, 0.3f, 1.0f);
+  draw_mesh(disc_, glm::scale(glm::translate(identity, {frame.ball.x, 0.01f, frame.ball.y}), glm::vec3(kBallRadius * shadow)),
+            glm::vec3(0.0f), 0.35f * shadow, false);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+
+  for (const auto& g : goals_) draw_mesh(cube_, g.model, g.color);
+
+  for (int i = 0; i < kMaxPlayers; ++i) {
+    const PlayerPose& p = frame.players[i];
+    if (!player_visible(p) || i == hidden_slot) continue;
+    if (!model.joints(p, joints_)) continue;
+    model.segments(joints_, segments_);
+    const Kit kit = team_kit(p.side == Side::Right ? hello.right : hello.left, p.side,
+                             (p.state & state_bits::kGoalie) != 0);
+    for (const auto& s : segments_) draw_mesh(s.sphere ? sphere_ : cube_, s.model, kit.color(s.part));
+  }
+
+  const glm::vec3 ball(frame.ball.x, std::max(frame.ball.z, kBallRadius), frame.ball.y);
+  draw_mesh(sphere_, glm::scale(glm::translate(identity, ball), glm::vec3(kBallRadius)), glm::vec3(0.97f));
+  glBindVertexArray(0);
+}
+
+}  // namespace mc::viewer
