@@ -40,6 +40,8 @@ bool RecordingReader::open(const std::string& path, std::string& error) {
   recovered_ = false;
   ignored_tail_ = 0;
   skipped_frames_ = 0;
+  scan_end_ = 0;
+  finished_ = false;
   rewind();
   fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd_ < 0) {
@@ -81,6 +83,7 @@ bool RecordingReader::open(const std::string& path, std::string& error) {
 
   if (!load_index(file_size)) {
     recovered_ = true;
+    chunks_.clear();
     if (!scan(data_start_, file_size, error)) return false;
   }
   return true;
@@ -108,7 +111,6 @@ bool RecordingReader::load_index(std::uint64_t file_size) {
 }
 
 bool RecordingReader::scan(std::uint64_t from, std::uint64_t file_size, std::string& error) {
-  chunks_.clear();
   std::uint64_t at = from;
   std::string bytes, err;
   std::vector<rec::ChunkEntry> entries;
@@ -120,7 +122,10 @@ bool RecordingReader::scan(std::uint64_t from, std::uint64_t file_size, std::str
     if (size == 0 || size > rec::kMaxRecordPayload + rec::kRecordOverhead || !read_at(at, size, bytes, error) ||
         rec::parse_record(bytes, view, err) != rec::RecordStatus::Ok)
       break;  // the unfinished (or damaged) end: keep what came before
-    if (view.type == rec::RecordType::Index) break;  // an index without a valid trailer: the data ends here
+    if (view.type == rec::RecordType::Index) {  // the writer closed the file: no more data
+      finished_ = true;
+      break;
+    }
     if (view.type == rec::RecordType::Chunk) {
       rec::ChunkInfo info;
       if (!rec::parse_chunk(view.payload, info, entries, err)) break;
@@ -130,7 +135,22 @@ bool RecordingReader::scan(std::uint64_t from, std::uint64_t file_size, std::str
     at += size;
   }
   ignored_tail_ = file_size - at;
+  scan_end_ = at;
   return true;
+}
+
+bool RecordingReader::refresh(std::string& error) {
+  if (fd_ < 0 || !recovered_ || finished_) return true;  // an indexed file never grows
+  struct stat st {};
+  if (::fstat(fd_, &st) != 0) {
+    error = "cannot stat recording " + path_ + ": " + std::strerror(errno);
+    return false;
+  }
+  const auto file_size = static_cast<std::uint64_t>(st.st_size);
+  if (file_size <= scan_end_) return true;
+  // Only whole records past the last one known are taken: a chunk being
+  // written right now is picked up by a later refresh.
+  return scan(scan_end_, file_size, error);
 }
 
 std::uint64_t RecordingReader::frame_count() const {

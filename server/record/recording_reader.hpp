@@ -52,6 +52,14 @@ class RecordingReader {
   bool next(PoseFrame& out, std::string& error, std::vector<std::string>* controls = nullptr);
   // Back to the first frame.
   void rewind();
+  // A recording still being written (no index yet: a live channel's) grows
+  // while it is read. This takes in the chunks appended since open() or the
+  // last refresh; next() then goes on into them. Cheap when nothing changed
+  // (one fstat). False + error only when the file cannot be read.
+  bool refresh(std::string& error);
+  // Simulation time of the first frame of the last chunk known (0 if none):
+  // the latest point a seek can reach.
+  int last_chunk_time() const { return chunks_.empty() ? 0 : chunks_.back().first_time; }
 
  private:
   bool read_at(std::uint64_t offset, std::size_t size, std::string& out, std::string& error) const;
@@ -69,6 +77,8 @@ class RecordingReader {
   std::uint64_t ignored_tail_ = 0;
   std::uint64_t skipped_frames_ = 0;
   std::uint64_t data_start_ = 0;  // offset of the first chunk record
+  std::uint64_t scan_end_ = 0;    // recovered files: where the last scan stopped
+  bool finished_ = false;         // recovered files: the scan met the index
 
   // Cursor: the loaded chunk and the next entry in it.
   std::size_t chunk_ = 0;

@@ -8,7 +8,7 @@ void Channel::set_hello(std::string json) {
   Message m = Message::control(std::move(json));
   {
     std::lock_guard lock(mutex_);
-    hello_ = m.bytes;
+    hello_ = m;
     // Frames coded against the old hello's skeleton are meaningless under the
     // new one: joiners wait for the next keyframe.
     gop_.clear();
@@ -34,7 +34,7 @@ std::vector<Message> Channel::join(const std::shared_ptr<Subscriber>& s) {
   std::lock_guard lock(mutex_);
   std::vector<Message> first;
   first.reserve(gop_.size() + 1);
-  if (hello_) first.push_back(Message{hello_, Message::Kind::Control});
+  if (hello_.bytes) first.push_back(hello_);
   first.insert(first.end(), gop_.begin(), gop_.end());
   subscribers_.push_back(s);
   return first;

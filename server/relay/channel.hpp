@@ -65,7 +65,7 @@ class Channel {
 
   const std::string name_;
   mutable std::mutex mutex_;
-  std::shared_ptr<const std::string> hello_;
+  Message hello_;  // bytes == nullptr until set_hello
   std::vector<Message> gop_;  // latest keyframe + deltas since
   std::vector<std::weak_ptr<Subscriber>> subscribers_;
   std::atomic<std::uint64_t> frames_published_{0};

@@ -62,28 +62,47 @@ std::string query_param(std::string_view target, std::string_view key) {
   return {};
 }
 
+namespace {
+Transport make_transport(net::ip::tcp::socket&& socket, const HttpContext& context) {
+  if (context.tls) return Transport(beast::tcp_stream(std::move(socket)), *context.tls);
+  return Transport(beast::tcp_stream(std::move(socket)));
+}
+}  // namespace
+
 HttpSession::HttpSession(net::ip::tcp::socket&& socket, const HttpContext& context)
-    : stream_(std::move(socket)), context_(context) {}
+    : stream_(make_transport(std::move(socket), context)), context_(context) {}
 
 void HttpSession::run() {
-  net::dispatch(stream_.get_executor(),
-                beast::bind_front_handler(&HttpSession::do_read, shared_from_this()));
+  stream_.set_owner(weak_from_this());
+  if (!stream_.is_tls())
+    return net::dispatch(stream_.get_executor(),
+                         beast::bind_front_handler(&HttpSession::do_read, shared_from_this()));
+  stream_.tcp().expires_after(kRequestTimeout);
+  stream_.tls().async_handshake(net::ssl::stream_base::server,
+                                beast::bind_front_handler(&HttpSession::on_handshake, shared_from_this()));
+}
+
+void HttpSession::on_handshake(beast::error_code ec) {
+  if (ec) return;  // not TLS, a bad client, or a timeout: nothing to answer
+  do_read();
+}
+
+void HttpSession::shutdown_send() {
+  beast::error_code ignored;
+  stream_.tcp().socket().shutdown(net::ip::tcp::socket::shutdown_send, ignored);
 }
 
 void HttpSession::do_read() {
   parser_.emplace();
   parser_->body_limit(context_.config.max_http_body);
   parser_->header_limit(8 * 1024);
-  stream_.expires_after(kRequestTimeout);
+  stream_.tcp().expires_after(kRequestTimeout);
   http::async_read(stream_, buffer_, *parser_,
                    beast::bind_front_handler(&HttpSession::on_read, shared_from_this()));
 }
 
 void HttpSession::on_read(beast::error_code ec, std::size_t) {
-  if (ec == http::error::end_of_stream) {
-    stream_.socket().shutdown(net::ip::tcp::socket::shutdown_send, ec);
-    return;
-  }
+  if (ec == http::error::end_of_stream) return shutdown_send();
   if (ec) {
     // A malformed or oversized request: answer 400 when the connection can
     // still carry it, then close.
@@ -174,7 +193,7 @@ void HttpSession::upgrade(http::request<http::string_body>&& req) {
     if (!channel) return send(text_response(req, http::status::not_found, "no such channel\n"));
   }
   beast::error_code ec;
-  const auto peer = stream_.socket().remote_endpoint(ec);
+  const auto peer = stream_.tcp().socket().remote_endpoint(ec);
   auto ticket = ec ? nullptr : context_.limiter->acquire(peer.address());
   if (!ticket) {
     if (replay) replay->close();
@@ -182,9 +201,10 @@ void HttpSession::upgrade(http::request<http::string_body>&& req) {
     ++context_.stats.refused_per_ip;
     return send(text_response(req, http::status::too_many_requests, "too many connections from your address\n"));
   }
-  stream_.expires_never();
+  stream_.tcp().expires_never();
   std::make_shared<WebSocketSession>(std::move(stream_), std::move(channel), context_.config,
-                                     context_.stats, std::move(ticket), std::move(replay))
+                                     context_.stats, std::move(ticket), std::move(replay),
+                                     context_.replays, context_.sessions)
       ->run(std::move(req));
 }
 
@@ -220,7 +240,7 @@ void HttpSession::send(Response&& res) {
   auto sp = std::make_shared<R>(std::forward<Response>(res));
   response_ = sp;
   const bool keep_alive = sp->keep_alive();
-  stream_.expires_after(kRequestTimeout);
+  stream_.tcp().expires_after(kRequestTimeout);
   http::async_write(stream_, *sp,
                     beast::bind_front_handler(&HttpSession::on_write, shared_from_this(), keep_alive));
 }
@@ -228,10 +248,7 @@ void HttpSession::send(Response&& res) {
 void HttpSession::on_write(bool keep_alive, beast::error_code ec, std::size_t) {
   response_.reset();
   if (ec) return;
-  if (!keep_alive) {
-    stream_.socket().shutdown(net::ip::tcp::socket::shutdown_send, ec);
-    return;
-  }
+  if (!keep_alive) return shutdown_send();
   do_read();
 }
 

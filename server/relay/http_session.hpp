@@ -1,5 +1,6 @@
-// One HTTP connection: serves static files from the web root, /healthz, and
-// hands WebSocket upgrades on /ws to a WebSocketSession.
+// One HTTP connection (plain, or TLS after its handshake): serves static
+// files from the web root, /healthz, and hands WebSocket upgrades on /ws to
+// a WebSocketSession.
 #pragma once
 
 #include <boost/beast/core.hpp>
@@ -13,7 +14,9 @@
 #include "server/relay/relay_config.hpp"
 #include "server/relay/replay_source.hpp"
 #include "server/relay/relay_stats.hpp"
+#include "server/relay/session_set.hpp"
 #include "server/relay/static_files.hpp"
+#include "server/relay/transport.hpp"
 
 namespace mc::relay {
 
@@ -26,6 +29,8 @@ struct HttpContext {
   std::shared_ptr<ConnectionLimiter> limiter;
   ControlHandler* control = nullptr;     // /control/...; nullptr = none
   ReplayFactory* replays = nullptr;      // /ws?recording=NAME, /recordings; nullptr = none
+  SessionSet* sessions = nullptr;        // every WebSocket session, for a graceful stop
+  boost::asio::ssl::context* tls = nullptr;  // set: HTTPS and WSS only
 };
 
 // The value of `key` in a target's query string ("/ws?channel=a&x=1"), or "".
@@ -37,7 +42,9 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void run();
 
  private:
+  void on_handshake(boost::beast::error_code ec);
   void do_read();
+  void shutdown_send();
   void on_read(boost::beast::error_code ec, std::size_t bytes);
   void on_write(bool keep_alive, boost::beast::error_code ec, std::size_t bytes);
   void upgrade(boost::beast::http::request<boost::beast::http::string_body>&& req);
@@ -45,7 +52,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   template <class Response>
   void send(Response&& res);
 
-  boost::beast::tcp_stream stream_;
+  Transport stream_;
   boost::beast::flat_buffer buffer_;
   const HttpContext& context_;
   std::optional<boost::beast::http::request_parser<boost::beast::http::string_body>> parser_;

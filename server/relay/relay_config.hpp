@@ -42,6 +42,11 @@ struct RelayConfig {
   // Bearer token for the control endpoints (/control/...). Empty = control
   // disabled: spectators are read-only either way.
   std::string control_token;
+
+  // TLS: both set = the port speaks HTTPS and WSS only (PEM files; the
+  // certificate file may hold the chain). Both empty = plain HTTP and WS.
+  std::string tls_cert_file;
+  std::string tls_key_file;
 };
 
 }  // namespace mc::relay

@@ -3,6 +3,7 @@
 #include <boost/asio/ip/address.hpp>
 
 #include "server/relay/listener.hpp"
+#include "server/relay/websocket_session.hpp"
 
 namespace net = boost::asio;
 
@@ -14,13 +15,17 @@ RelayServer::RelayServer(RelayConfig config, std::shared_ptr<ChannelRegistry> ch
       files_(config_.web_root),
       channels_(std::move(channels)),
       context_{config_, stats_, files_, *channels_,
-               std::make_shared<ConnectionLimiter>(config_.max_connections_per_ip), control, replays},
+               std::make_shared<ConnectionLimiter>(config_.max_connections_per_ip), control, replays,
+               &sessions_},
       ioc_(config_.threads ? static_cast<int>(config_.threads)
                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {}
 
 RelayServer::~RelayServer() { stop(); }
 
 bool RelayServer::start(std::string& error) {
+  if (!config_.tls_cert_file.empty() || !config_.tls_key_file.empty()) {
+    if (!load_tls(error)) return false;
+  }
   boost::system::error_code ec;
   const auto address = net::ip::make_address(config_.address, ec);
   if (ec) {
@@ -35,11 +40,43 @@ bool RelayServer::start(std::string& error) {
   return true;
 }
 
+bool RelayServer::load_tls(std::string& error) {
+  if (config_.tls_cert_file.empty() || config_.tls_key_file.empty()) {
+    error = "TLS needs both --tls-cert and --tls-key";
+    return false;
+  }
+  tls_.emplace(net::ssl::context::tls_server);
+  tls_->set_options(net::ssl::context::default_workarounds | net::ssl::context::no_sslv2 |
+                    net::ssl::context::no_sslv3 | net::ssl::context::no_tlsv1 | net::ssl::context::no_tlsv1_1);
+  boost::system::error_code ec;
+  tls_->use_certificate_chain_file(config_.tls_cert_file, ec);
+  if (ec) {
+    error = "cannot load the TLS certificate " + config_.tls_cert_file + ": " + ec.message();
+    tls_.reset();
+    return false;
+  }
+  tls_->use_private_key_file(config_.tls_key_file, net::ssl::context::pem, ec);
+  if (ec) {
+    error = "cannot load the TLS key " + config_.tls_key_file + ": " + ec.message();
+    tls_.reset();
+    return false;
+  }
+  if (SSL_CTX_check_private_key(tls_->native_handle()) != 1) {
+    error = "the TLS key " + config_.tls_key_file + " does not match the certificate " + config_.tls_cert_file;
+    tls_.reset();
+    return false;
+  }
+  context_.tls = &*tls_;
+  return true;
+}
+
 std::uint16_t RelayServer::port() const { return listener_ ? listener_->port() : 0; }
 
 void RelayServer::stop(std::chrono::milliseconds grace) {
   if (threads_.empty()) return;
   listener_->close();
+  // Every spectator, live or replaying: a close frame each.
+  for (const auto& s : sessions_.snapshot()) s->shutdown();
   for (const auto& ch : channels_->all()) ch->shutdown_subscribers();
   const auto deadline = std::chrono::steady_clock::now() + grace;
   while (stats_.clients.load() > 0 && std::chrono::steady_clock::now() < deadline)

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <boost/asio/io_context.hpp>
+#include <boost/asio/ssl/context.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -31,7 +33,8 @@ class RelayServer {
   RelayServer(const RelayServer&) = delete;
   RelayServer& operator=(const RelayServer&) = delete;
 
-  // Binds and starts the I/O threads. False with `error` when it cannot.
+  // Loads the TLS certificate if configured, binds and starts the I/O
+  // threads. False with `error` when it cannot.
   bool start(std::string& error);
   // The bound port (useful with port 0).
   std::uint16_t port() const;
@@ -41,12 +44,17 @@ class RelayServer {
   void stop(std::chrono::milliseconds grace = std::chrono::milliseconds(2000));
 
   const RelayStats& stats() const { return stats_; }
+  bool tls() const { return context_.tls != nullptr; }
 
  private:
+  bool load_tls(std::string& error);
+
   RelayConfig config_;
   RelayStats stats_;
   StaticFiles files_;
   std::shared_ptr<ChannelRegistry> channels_;
+  SessionSet sessions_;
+  std::optional<boost::asio::ssl::context> tls_;
   HttpContext context_;
   boost::asio::io_context ioc_;
   std::shared_ptr<Listener> listener_;

@@ -12,6 +12,7 @@ struct RelayStats {
   std::atomic<std::int64_t> clients{0};
   std::atomic<std::uint64_t> connections_total{0};
   std::atomic<std::uint64_t> messages_sent{0};
+  std::atomic<std::uint64_t> writes{0};  // socket writes: one per batch of messages
   std::atomic<std::uint64_t> bytes_sent{0};
   std::atomic<std::uint64_t> frames_dropped{0};
   std::atomic<std::uint64_t> closed_slow{0};

@@ -1,7 +1,8 @@
 // A spectator's private stream that the spectator steers (a replay of a
 // recording: pause, seek, speed, goals). The relay only moves bytes: it
 // subscribes the session to the source's channel and hands the spectator's
-// text messages to the source. The owner of recordings implements it.
+// text messages to the source. The owner of recordings implements it. A
+// time shift is the same thing over a live channel's own recording.
 #pragma once
 
 #include <boost/asio/any_io_executor.hpp>
@@ -32,6 +33,17 @@ class ReplayFactory {
   virtual std::shared_ptr<ReplaySource> open(const std::string& name,
                                              boost::asio::any_io_executor executor,
                                              std::string& error) = 0;
+  // A time shift of the live channel `channel`: a private replay of its
+  // running recording, which keeps growing while it is read. nullptr +
+  // error when the channel is not being recorded.
+  virtual std::shared_ptr<ReplaySource> open_timeshift(const std::string& channel,
+                                                       boost::asio::any_io_executor executor,
+                                                       std::string& error) {
+    (void)channel;
+    (void)executor;
+    error = "time shift is not available";
+    return nullptr;
+  }
   // The recordings as JSON (/recordings).
   virtual std::string list_json() = 0;
 };

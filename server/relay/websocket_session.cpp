@@ -1,7 +1,7 @@
 #include "server/relay/websocket_session.hpp"
 
-#include <boost/asio/bind_executor.hpp>
 #include <boost/asio/post.hpp>
+#include <nlohmann/json.hpp>
 
 #include "server/relay/log.hpp"
 
@@ -16,16 +16,37 @@ namespace {
 constexpr int kMaxInboundPerSecond = 20;
 }  // namespace
 
-WebSocketSession::WebSocketSession(beast::tcp_stream&& stream, std::shared_ptr<Channel> channel,
+// A session's subscription to one channel. A new tap per switch: deliveries
+// from a channel the session has left carry an old epoch and are ignored.
+class WebSocketSession::Tap : public Subscriber {
+ public:
+  Tap(std::weak_ptr<WebSocketSession> session, std::uint64_t epoch)
+      : session_(std::move(session)), epoch_(epoch) {}
+  void deliver(const Message& m) override {
+    if (auto s = session_.lock()) s->deliver(epoch_, m);
+  }
+  void shutdown() override {
+    if (auto s = session_.lock()) s->shutdown();
+  }
+
+ private:
+  std::weak_ptr<WebSocketSession> session_;
+  std::uint64_t epoch_;
+};
+
+WebSocketSession::WebSocketSession(Transport&& transport, std::shared_ptr<Channel> channel,
                                    const RelayConfig& config, RelayStats& stats,
                                    std::unique_ptr<ConnectionLimiter::Ticket> ticket,
-                                   std::shared_ptr<ReplaySource> replay)
-    : ws_(std::move(stream)),
-      channel_(std::move(channel)),
+                                   std::shared_ptr<ReplaySource> replay, ReplayFactory* timeshift,
+                                   SessionSet* sessions)
+    : ws_(std::move(transport)),
+      live_(std::move(channel)),
       config_(config),
       stats_(stats),
       ticket_(std::move(ticket)),
       replay_(std::move(replay)),
+      timeshift_factory_(replay_ ? nullptr : timeshift),
+      sessions_(sessions),
       queue_(config.max_queue_bytes),
       stall_timer_(ws_.get_executor()) {
   ++stats_.clients;
@@ -33,6 +54,7 @@ WebSocketSession::WebSocketSession(beast::tcp_stream&& stream, std::shared_ptr<C
 }
 
 WebSocketSession::~WebSocketSession() {
+  if (sessions_) sessions_->remove(this);
   --stats_.clients;
   stats_.queued_bytes -= accounted_queue_bytes_;
   stats_.frames_dropped += queue_.dropped();
@@ -46,7 +68,8 @@ void WebSocketSession::account_queue() {
 
 void WebSocketSession::end_session() {
   open_ = false;
-  channel_->leave(this);
+  if (current_ && tap_) current_->leave(tap_.get());
+  tap_.reset();
   stall_timer_.cancel();
   if (replay_) {
     replay_->close();
@@ -61,7 +84,13 @@ void WebSocketSession::shutdown() {
 }
 
 void WebSocketSession::run(beast::http::request<beast::http::string_body> req) {
-  beast::get_lowest_layer(ws_).expires_never();
+  if (sessions_) sessions_->add(shared_from_this());
+  auto& transport = ws_.next_layer();
+  transport.set_owner(weak_from_this());
+  transport.on_idle([this] {
+    if (!writing_) write_next();
+  });
+  transport.tcp().expires_never();
   ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
   ws_.read_message_max(config_.max_inbound_message);
   ws_.set_option(websocket::stream_base::decorator([](websocket::response_type& res) {
@@ -75,8 +104,20 @@ void WebSocketSession::on_accept(beast::error_code ec) {
   open_ = true;
   // Join and queue the catch-up on this strand, before any later deliver()
   // (which is posted to the same strand) can run: nothing is missed or doubled.
-  for (auto& m : channel_->join(shared_from_this())) enqueue(std::move(m));
+  switch_to(live_);
+  arm_stall_check();
   do_read();
+}
+
+void WebSocketSession::switch_to(std::shared_ptr<Channel> channel, std::optional<Message> announce) {
+  if (current_ && tap_) current_->leave(tap_.get());
+  tap_ = std::make_shared<Tap>(weak_from_this(), ++epoch_);
+  current_ = std::move(channel);
+  std::vector<Message> dropped;
+  queue_.take_all(dropped);  // the old source's backlog is of no use now
+  if (announce) enqueue(std::move(*announce));
+  for (auto& m : current_->join(tap_)) enqueue(std::move(m));
+  account_queue();
 }
 
 void WebSocketSession::do_read() {
@@ -101,18 +142,58 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t) {
     ++stats_.inbound_rejected;
     return close_with(websocket::close_code::policy_error, "too many messages");
   }
-  // Live spectators are read-only: their messages are ignored. A replay's
-  // spectator steers its own replay.
-  if (replay_ && ws_.got_text()) {
+  if (ws_.got_text()) {
     const auto data = in_.data();
-    replay_->on_client_message({static_cast<const char*>(data.data()), data.size()});
+    on_text({static_cast<const char*>(data.data()), data.size()});
   }
   in_.consume(in_.size());
-  do_read();
+  if (open_) do_read();
 }
 
-void WebSocketSession::deliver(const Message& m) {
-  net::post(ws_.get_executor(), [self = shared_from_this(), m] { self->enqueue(m); });
+void WebSocketSession::on_text(std::string_view text) {
+  // A recording's replay gets every message of its spectator.
+  if (replay_ && !shifted_) return replay_->on_client_message(text);
+  if (!timeshift_factory_) return;  // live spectators are otherwise read-only
+  const auto j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object() || !j.contains("type") || !j["type"].is_string()) return;
+  const std::string& type = j["type"].get_ref<const std::string&>();
+  if (type == "replay" && shifted_) return replay_->on_client_message(text);
+  if (type != "timeshift" || !j.contains("action") || !j["action"].is_string()) return;
+  double time = 0;
+  const bool has_time = j.contains("time") && j["time"].is_number();
+  if (has_time) time = j["time"].get<double>();
+  on_timeshift(j["action"].get_ref<const std::string&>(), has_time ? &time : nullptr);
+}
+
+void WebSocketSession::on_timeshift(std::string_view action, const double* time) {
+  if (action == "seek" && time) {
+    if (!shifted_) {
+      std::string error;
+      auto replay = timeshift_factory_->open_timeshift(live_->name(), ws_.get_executor(), error);
+      if (!replay) {
+        enqueue(Message::control(nlohmann::json{{"type", "timeshift"}, {"mode", "live"}, {"error", error}}.dump(
+            -1, ' ', false, nlohmann::json::error_handler_t::replace)));
+        return;
+      }
+      replay_ = std::move(replay);
+      shifted_ = true;
+      switch_to(replay_->channel(), Message::control(R"({"type":"timeshift","mode":"replay"})"));
+      log_event("timeshift", live_->name());
+    }
+    replay_->on_client_message(
+        nlohmann::json{{"type", "replay"}, {"action", "seek"}, {"time", *time}}.dump());
+  } else if (action == "live" && shifted_) {
+    replay_->close();
+    replay_.reset();
+    shifted_ = false;
+    switch_to(live_, Message::control(R"({"type":"timeshift","mode":"live"})"));
+  }
+}
+
+void WebSocketSession::deliver(std::uint64_t tap_epoch, const Message& m) {
+  net::post(ws_.get_executor(), [self = shared_from_this(), tap_epoch, m] {
+    if (tap_epoch == self->epoch_) self->enqueue(m);
+  });
 }
 
 void WebSocketSession::enqueue(Message m) {
@@ -127,58 +208,60 @@ void WebSocketSession::write_next() {
     // A close frame is queued behind the write that just ended, or the
     // session is over: nothing more goes out.
     writing_ = false;
-    stall_timer_.cancel();
     return;
   }
-  if (batch_pos_ >= batch_.size()) {
-    batch_.clear();
-    batch_pos_ = 0;
-    // Everything that queued during the last write goes out as one batch.
-    queue_.take_all(batch_);
-    account_queue();
-    if (batch_.empty()) {
-      writing_ = false;
-      stall_timer_.cancel();
-      return;
-    }
+  // Beast is writing a control frame (pong, close): the transport calls
+  // back when it is done.
+  if (!ws_.next_layer().can_write_raw() || queue_.empty()) {
+    writing_ = false;
+    return;
   }
+  // Everything that queued during the last write goes out as one batch.
+  batch_.clear();
+  buffers_.clear();
+  queue_.take_all(batch_);
+  account_queue();
+  for (const auto& m : batch_) buffers_.push_back(net::buffer(*m.wire));
   writing_ = true;
-  const Message& m = batch_[batch_pos_];
-  ws_.binary(m.binary());
-  stall_timer_.expires_after(config_.stall_timeout);
-  stall_timer_.async_wait(
-      beast::bind_front_handler(&WebSocketSession::on_stall_timer, shared_from_this()));
-  ws_.async_write(net::buffer(*m.bytes),
-                  beast::bind_front_handler(&WebSocketSession::on_write, shared_from_this()));
+  write_started_ = std::chrono::steady_clock::now();
+  ++stats_.writes;
+  ws_.next_layer().async_write_raw(
+      buffers_, beast::bind_front_handler(&WebSocketSession::on_write, shared_from_this()));
 }
 
 void WebSocketSession::on_write(beast::error_code ec, std::size_t bytes) {
+  writing_ = false;
   if (ec) {
-    writing_ = false;
     end_session();
     return;
   }
-  ++stats_.messages_sent;
+  stats_.messages_sent += batch_.size();
   stats_.bytes_sent += bytes;
-  const Message& sent = batch_[batch_pos_];
-  if (sent.binary())
-    stats_.record_delay(std::chrono::duration<double, std::milli>(
-                            std::chrono::steady_clock::now() - sent.published)
-                            .count());
-  ++batch_pos_;
+  const auto now = std::chrono::steady_clock::now();
+  for (const auto& sent : batch_)
+    if (sent.binary())
+      stats_.record_delay(std::chrono::duration<double, std::milli>(now - sent.published).count());
   write_next();
 }
 
-void WebSocketSession::on_stall_timer(beast::error_code ec) {
-  if (ec == net::error::operation_aborted || !writing_) return;
+void WebSocketSession::arm_stall_check() {
+  // Checked a few times per stall timeout: bounds detection to 1.25x the
+  // timeout without arming a timer for every write.
+  stall_timer_.expires_after(std::max(config_.stall_timeout / 4, std::chrono::milliseconds(10)));
+  stall_timer_.async_wait(beast::bind_front_handler(&WebSocketSession::on_stall_check, shared_from_this()));
+}
+
+void WebSocketSession::on_stall_check(beast::error_code ec) {
+  if (ec == net::error::operation_aborted || !open_) return;
+  if (!writing_ || std::chrono::steady_clock::now() - write_started_ < config_.stall_timeout)
+    return arm_stall_check();
   // One write has not completed for stall_timeout: the client stopped
   // reading. Its kernel buffer is full, so a close frame cannot reach it
   // either; drop the connection and free its queue.
   ++stats_.closed_slow;
-  log_event("ws_closed_stalled", channel_->name());
+  log_event("ws_closed_stalled", live_->name());
   end_session();
-  beast::error_code ignored;
-  beast::get_lowest_layer(ws_).socket().close(ignored);
+  ws_.next_layer().close();
 }
 
 void WebSocketSession::close_with(websocket::close_code code, const char* reason) {

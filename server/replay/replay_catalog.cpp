@@ -43,6 +43,51 @@ std::shared_ptr<relay::ReplaySource> ReplayCatalog::open(const std::string& name
   return player;
 }
 
+void ReplayCatalog::set_live_recording(const std::string& channel, const std::string& name) {
+  std::lock_guard lock(mutex_);
+  live_[channel] = Live{name, nullptr, {}};
+}
+
+std::shared_ptr<relay::ReplaySource> ReplayCatalog::open_timeshift(const std::string& channel,
+                                                                   boost::asio::any_io_executor executor,
+                                                                   std::string& error) {
+  std::string name;
+  RecordingSummary summary;
+  {
+    std::lock_guard lock(mutex_);
+    auto it = live_.find(channel);
+    if (dir_.empty() || it == live_.end()) {
+      error = "channel '" + channel + "' is not recorded: no time shift";
+      return nullptr;
+    }
+    Live& live = it->second;
+    const std::string path = (fs::path(dir_) / live.name).string();
+    if (!live.reader) {
+      live.reader = std::make_unique<record::RecordingReader>();
+      if (!live.reader->open(path, error)) {
+        live.reader.reset();
+        return nullptr;
+      }
+    }
+    PoseFrame f;
+    if (!live.reader->refresh(error)) return nullptr;
+    while (live.reader->next(f, error)) live.summary.note(f);
+    if (!error.empty()) return nullptr;
+    if (live.summary.empty) {
+      error = "the recording of '" + channel + "' holds no frames yet";
+      return nullptr;
+    }
+    name = live.name;
+    summary = live.summary;
+  }
+  auto reader = std::make_unique<record::RecordingReader>();
+  if (!reader->open((fs::path(dir_) / name).string(), error)) return nullptr;
+  auto player = std::make_shared<ReplayPlayer>(executor, name, std::move(reader), std::move(summary),
+                                               /*follow=*/true);
+  player->start();
+  return player;
+}
+
 std::string ReplayCatalog::list_json() {
   nlohmann::json list = nlohmann::json::array();
   std::error_code ec;

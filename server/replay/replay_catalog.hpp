@@ -1,7 +1,8 @@
 // The recordings one server offers for replay: the files in its recording
 // folder. Opens private replays for spectators (relay::ReplayFactory) and
 // lists them for /recordings. A recording's summary (time range, goals) is
-// computed once per file size and cached.
+// computed once per file size and cached. Also opens time shifts of live
+// channels: replays of their recordings while they are being written.
 #pragma once
 
 #include <map>
@@ -29,6 +30,14 @@ class ReplayCatalog : public relay::ReplayFactory {
                                             std::string& error) override;
   std::string list_json() override;
 
+  // `channel` is being recorded into `name` (a file in dir()): its
+  // spectators may time shift. Call before the relay starts.
+  void set_live_recording(const std::string& channel, const std::string& name);
+  // A private replay that follows the growing recording of `channel`.
+  std::shared_ptr<relay::ReplaySource> open_timeshift(const std::string& channel,
+                                                      boost::asio::any_io_executor executor,
+                                                      std::string& error) override;
+
   const std::string& dir() const { return dir_; }
 
  private:
@@ -36,9 +45,17 @@ class ReplayCatalog : public relay::ReplayFactory {
     std::uint64_t size = 0;
     RecordingSummary summary;
   };
+  // A live recording's summary, kept up to date by reading only what was
+  // appended since the last time shift opened (the first one reads it all).
+  struct Live {
+    std::string name;
+    std::unique_ptr<record::RecordingReader> reader;
+    RecordingSummary summary;
+  };
   std::string dir_;
   std::mutex mutex_;
   std::map<std::string, Cached> summaries_;
+  std::map<std::string, Live> live_;  // by channel
 };
 
 }  // namespace mc::replay

@@ -22,28 +22,28 @@ std::uint64_t unix_ms() {
 
 }  // namespace
 
+void RecordingSummary::note(const PoseFrame& f) {
+  if (empty) {
+    first_time = f.time;
+    score_left = f.score_left;
+    score_right = f.score_right;
+    empty = false;
+  }
+  if (f.score_left > score_left) goals.push_back({f.time, Side::Left});
+  if (f.score_right > score_right) goals.push_back({f.time, Side::Right});
+  score_left = f.score_left;
+  score_right = f.score_right;
+  last_time = f.time;
+}
+
 bool summarize(record::RecordingReader& reader, RecordingSummary& out, std::string& error) {
   out = {};
   PoseFrame f;
-  bool first = true;
-  int left = 0, right = 0;
   reader.rewind();
-  while (reader.next(f, error)) {
-    if (first) {
-      out.first_time = f.time;
-      left = f.score_left;
-      right = f.score_right;
-      first = false;
-    }
-    if (f.score_left > left) out.goals.push_back({f.time, Side::Left});
-    if (f.score_right > right) out.goals.push_back({f.time, Side::Right});
-    left = f.score_left;
-    right = f.score_right;
-    out.last_time = f.time;
-  }
+  while (reader.next(f, error)) out.note(f);
   reader.rewind();
   if (!error.empty()) return false;
-  if (first) {
+  if (out.empty) {
     error = "the recording holds no frames";
     return false;
   }
@@ -51,13 +51,15 @@ bool summarize(record::RecordingReader& reader, RecordingSummary& out, std::stri
 }
 
 ReplayPlayer::ReplayPlayer(boost::asio::any_io_executor executor, std::string name,
-                           std::unique_ptr<record::RecordingReader> reader, RecordingSummary summary)
+                           std::unique_ptr<record::RecordingReader> reader, RecordingSummary summary,
+                           bool follow)
     : timer_(executor),
       name_(std::move(name)),
       reader_(std::move(reader)),
       summary_(std::move(summary)),
       channel_(std::make_shared<relay::Channel>("replay:" + name_)),
-      encoder_(reader_->hello().skeleton) {
+      encoder_(reader_->hello().skeleton),
+      follow_(follow) {
   channel_->set_hello(reader_->hello_json());
   channel_->set_feed_state(relay::FeedState::Live);
 }
@@ -77,6 +79,12 @@ void ReplayPlayer::schedule() {
 void ReplayPlayer::on_tick(boost::system::error_code ec) {
   if (ec || closed_ || paused_) return;
   if (!send_next()) {
+    if (follow_) {
+      // Caught up with a recording still being written: wait for its next
+      // chunk, holding the last picture.
+      if (++frames_since_status_ >= 20) publish_status();
+      return schedule();
+    }
     // The end of the recording: hold the last picture, paused.
     paused_ = true;
     publish_status();
@@ -92,7 +100,11 @@ bool ReplayPlayer::send_next() {
   PoseFrame f;
   std::string error;
   controls_.clear();
-  if (!reader_->next(f, error, &controls_)) return false;
+  if (!reader_->next(f, error, &controls_)) {
+    if (!follow_ || !error.empty() || !reader_->refresh(error) || !reader_->next(f, error, &controls_))
+      return false;
+  }
+  if (follow_ && f.time > summary_.last_time) summary_.note(f);
   // Recorded events name recorded frames: renumber them like the frame.
   const std::int64_t shift = static_cast<std::int64_t>(seq_) - f.seq;
   for (const auto& text : controls_) {
@@ -111,15 +123,21 @@ bool ReplayPlayer::send_next() {
 }
 
 void ReplayPlayer::seek(int time) {
-  time = std::clamp(time, summary_.first_time, summary_.last_time);
   PoseFrame f;
   std::string error;
+  if (follow_ && reader_->refresh(error)) {
+    // The recording has grown since the summary: its last chunk is reachable.
+    time = std::clamp(time, summary_.first_time, std::max(summary_.last_time, reader_->last_chunk_time()));
+  } else {
+    time = std::clamp(time, summary_.first_time, summary_.last_time);
+  }
   if (!reader_->seek(time, f, error)) return;
   // seek() decoded the frame at `time`: send it as the new picture. A jump
   // breaks the delta chain, so it goes out as a keyframe.
   f.seq = seq_++;
   f.server_time_ms = unix_ms();
   time_ = f.time;
+  if (follow_ && f.time > summary_.last_time) summary_.note(f);
   encoder_.force_keyframe();
   bool key = false;
   channel_->publish_frame(encoder_.encode(f, key), key);
@@ -179,7 +197,8 @@ void ReplayPlayer::publish_status() {
                                            {"speed", speed_},
                                            {"first_time", summary_.first_time},
                                            {"last_time", summary_.last_time},
-                                           {"goals", goals}}
+                                           {"goals", goals},
+                                           {"live_edge", follow_ && time_ >= summary_.last_time}}
                                 .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 

@@ -12,6 +12,8 @@
 // Server -> spectator, on every change and once a second:
 //   {"type":"replay","name":..,"time":..,"paused":..,"speed":..,
 //    "first_time":..,"last_time":..,"goals":[{"time":..,"side":"l"|"r"}]}
+//   (a time shift adds "live_edge":true while it has caught up with the
+//   recording, which trails the live feed by up to one chunk, ~1 s)
 #pragma once
 
 #include <boost/asio/any_io_executor.hpp>
@@ -36,6 +38,11 @@ struct GoalMark {
 struct RecordingSummary {
   int first_time = 0, last_time = 0;
   std::vector<GoalMark> goals;
+  int score_left = 0, score_right = 0;  // at last_time
+  bool empty = true;                    // no frame seen yet
+
+  // Takes in one more frame in stream order (a goal is a score change).
+  void note(const PoseFrame& f);
 };
 
 // Reads the whole recording and notes its time range and goals (score
@@ -44,8 +51,12 @@ bool summarize(record::RecordingReader& reader, RecordingSummary& out, std::stri
 
 class ReplayPlayer : public relay::ReplaySource, public std::enable_shared_from_this<ReplayPlayer> {
  public:
+  // `follow`: the recording is still being written (a live channel's time
+  // shift). At its end the player waits for more instead of pausing, and
+  // the summary grows with the frames it reads.
   ReplayPlayer(boost::asio::any_io_executor executor, std::string name,
-               std::unique_ptr<record::RecordingReader> reader, RecordingSummary summary);
+               std::unique_ptr<record::RecordingReader> reader, RecordingSummary summary,
+               bool follow = false);
 
   // Starts producing frames (call once, after construction).
   void start();
@@ -79,6 +90,7 @@ class ReplayPlayer : public relay::ReplaySource, public std::enable_shared_from_
   double speed_ = 1.0;
   bool paused_ = false;
   bool closed_ = false;
+  bool follow_ = false;
 };
 
 }  // namespace mc::replay

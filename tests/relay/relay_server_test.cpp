@@ -141,6 +141,79 @@ TEST_F(RelayServerTest, StalledClientNeverDelaysOthersAndIsClosed) {
   EXPECT_GE(server_->stats().closed_slow.load() + server_->stats().frames_dropped.load(), 1u);
 }
 
+TEST_F(RelayServerTest, QueuedFramesGoOutTogetherInOneGatheredWrite) {
+  // Room for the whole burst: nothing is skipped, only batched.
+  config_.max_queue_bytes = 32 * 1024 * 1024;
+  config_.stall_timeout = std::chrono::seconds(60);
+  start();
+  WsTestClient c(server_->port());
+  EXPECT_EQ(c.read().data, R"({"type":"hello"})");
+  wait_for_subscribers(1);
+  // The client does not read while 12 MB are published: the kernel buffers
+  // fill, one write stays in flight, and the rest queues behind it.
+  constexpr int kFrames = 400;
+  for (int f = 0; f < kFrames; ++f) channel_->publish_frame(frame_bytes(f, f % 20 == 0, 30000), f % 20 == 0);
+  for (int f = 0; f < kFrames; ++f) {
+    auto m = c.read();
+    ASSERT_TRUE(m.binary);
+    ASSERT_EQ(m.data, frame_bytes(f, f % 20 == 0, 30000)) << "frame " << f;
+  }
+  const auto writes = server_->stats().writes.load();
+  const auto messages = server_->stats().messages_sent.load();
+  EXPECT_EQ(messages, kFrames + 1u);
+  // One write per batch: far fewer writes than messages.
+  EXPECT_LT(writes * 4, messages) << writes << " writes for " << messages << " messages";
+}
+
+TEST_F(RelayServerTest, PreFramedMessagesOfEveryLengthClassDecode) {
+  start();
+  WsTestClient c(server_->port());
+  EXPECT_EQ(c.read().data, R"({"type":"hello"})");
+  wait_for_subscribers(1);
+  // Around the 7-bit, 16-bit and 64-bit length encodings of RFC 6455.
+  const std::vector<std::size_t> sizes{3, 125, 126, 127, 65535, 65536, 70000};
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    channel_->publish_frame(frame_bytes(static_cast<int>(i), true, sizes[i]), true);
+    channel_->publish_control(std::string(sizes[i], 'j'));
+  }
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    auto f = c.read();
+    EXPECT_TRUE(f.binary);
+    EXPECT_EQ(f.data, frame_bytes(static_cast<int>(i), true, sizes[i])) << sizes[i];
+    auto t = c.read();
+    EXPECT_FALSE(t.binary);
+    EXPECT_EQ(t.data, std::string(sizes[i], 'j')) << sizes[i];
+  }
+}
+
+TEST_F(RelayServerTest, PongsFromBeastNeverInterleaveWithGatheredWrites) {
+  config_.max_queue_bytes = 32 * 1024 * 1024;
+  start();
+  WsTestClient c(server_->port());
+  EXPECT_EQ(c.read().data, R"({"type":"hello"})");
+  wait_for_subscribers(1);
+  constexpr int kFrames = 300;
+  std::thread publisher([&] {
+    for (int f = 0; f < kFrames; ++f) {
+      channel_->publish_frame(frame_bytes(f, f % 20 == 0, 8000), f % 20 == 0);
+      if (f % 10 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  });
+  // Pings between reads: the server's pongs (written by Beast) land between
+  // its gathered writes of frames, never inside one, or the stream breaks.
+  int pongs = 0;
+  c.stream().control_callback([&](boost::beast::websocket::frame_type kind, boost::beast::string_view) {
+    if (kind == boost::beast::websocket::frame_type::pong) ++pongs;
+  });
+  for (int f = 0; f < kFrames; ++f) {
+    if (f % 3 == 0) c.stream().ping({});
+    auto m = c.read();
+    ASSERT_EQ(m.data, frame_bytes(f, f % 20 == 0, 8000)) << "frame " << f;
+  }
+  publisher.join();
+  EXPECT_GT(pongs, 0);
+}
+
 TEST_F(RelayServerTest, OversizedInboundMessageEndsTheSession) {
   config_.max_inbound_message = 1024;
   start();
