@@ -124,6 +124,43 @@ std::vector<int> cell_path(const MotionGraph& g, const CapabilityParams& p, cons
   return path;
 }
 
+std::vector<std::uint32_t> iterations_within(const MotionGraph& g, const CapabilityParams& p, const CapabilityMap& fin,
+                                             float tolerance) {
+  const std::size_t cells = fin.cost.size();
+  std::vector<std::uint32_t> out(cells, 0);
+  if (g.size() == 0 || p.start_node < 0 || p.start_node >= g.size()) return out;
+  std::vector<float> cost(cells, kUnreached);
+  const bool obstacles = p.obstacles.size() == cells;
+  for (int it = 0; it < fin.iterations; ++it) {
+    walk(g, p, static_cast<std::uint32_t>(it), [&](int step, std::uint32_t, float x, float y) {
+      const int cell = fin.grid.index(x, y);
+      if (cell < 0) return true;
+      const auto ci = static_cast<std::size_t>(cell);
+      if (obstacles && p.obstacles[ci]) return false;
+      float c = static_cast<float>(step);
+      if (p.alpha > 0) {
+        const float dx = x - fin.grid.center_x(cell), dy = y - fin.grid.center_y(cell);
+        c += p.alpha * (dx * dx + dy * dy);
+      }
+      if (c < cost[ci]) {
+        cost[ci] = c;
+        if (out[ci] == 0 && fin.cost[ci] != kUnreached && c <= fin.cost[ci] * (1 + tolerance))
+          out[ci] = static_cast<std::uint32_t>(it + 1);
+      }
+      return true;
+    });
+  }
+  return out;
+}
+
+std::uint32_t iteration_quantile(std::vector<std::uint32_t> its, double fraction) {
+  its.erase(std::remove(its.begin(), its.end(), 0u), its.end());
+  if (its.empty()) return 0;
+  std::sort(its.begin(), its.end());
+  const auto k = static_cast<std::size_t>(std::ceil(fraction * static_cast<double>(its.size())));
+  return its[std::min(its.size() - 1, k > 0 ? k - 1 : 0)];
+}
+
 std::vector<float> grassfire(const MapGrid& grid, const std::vector<std::uint8_t>& obstacles) {
   const auto cells = static_cast<std::size_t>(grid.cells());
   std::vector<float> d(cells, kUnreached);

@@ -38,7 +38,7 @@ struct CapabilityParams {
   MapGrid grid;
   int start_node = 0;              // graph node of the start pose
   int max_depth = 300;             // frames per walk (10 s at 30 Hz)
-  int iterations = 50000;          // walks (about 0.5 s on the CMU graph)
+  int iterations = 200000;         // walks (about 2 s on the CMU graph; the far cells converge slowly)
   std::uint64_t seed = 1;          // walk i uses its own stream derived from (seed, i)
   float alpha = 0;                 // goal weight (the paper ran alpha = 0), frames per m^2
   std::vector<std::uint8_t> obstacles;  // grid.cells() flags, 1 = blocked; empty = none
@@ -71,6 +71,14 @@ CapabilityMap compute_capability_map(const MotionGraph& graph, const CapabilityP
 // The graph nodes of the saved path of a cell (start node first, best_step + 1
 // nodes), regenerated from the walk's seed: paths cost no memory.
 std::vector<int> cell_path(const MotionGraph& graph, const CapabilityParams& params, const CapabilityMap& map, int cell);
+
+// Convergence against the final map: for each cell `final` reached, the
+// iteration (1-based) from which its cost stayed within `tolerance` (relative)
+// of the final cost, found by replaying the same seeded walks; 0 elsewhere.
+std::vector<std::uint32_t> iterations_within(const MotionGraph& graph, const CapabilityParams& params,
+                                             const CapabilityMap& final_map, float tolerance);
+// The iteration by which `fraction` of the reached cells were within tolerance.
+std::uint32_t iteration_quantile(std::vector<std::uint32_t> iterations, double fraction);
 
 // Grassfire (Blum 1967): 8-connected shortest distance (m) from the start cell
 // (the cell holding the origin) around obstacles; kUnreached where cut off.

@@ -155,3 +155,19 @@ TEST(Grassfire, DistancesAndDetoursAroundObstacles) {
   EXPECT_GT(around[static_cast<std::size_t>(grid.index(1.1f, 0.1f))], 2.0f);
   EXPECT_EQ(around[static_cast<std::size_t>(grid.index(0.6f, 0.1f))], kUnreached);
 }
+
+TEST(CapabilityMap, IterationsWithinToleranceReplayTheWalks) {
+  const MotionGraph g = graph({move(0, 0, 0), move(0.08f, 0, 0), move(0.05f, 0, 0.3f)}, {{1, 2}, {1, 2}, {1, 2}});
+  const CapabilityParams p = params(300, 40);
+  const CapabilityMap m = compute_capability_map(g, p);
+  const auto exact = iterations_within(g, p, m, 0);
+  const auto loose = iterations_within(g, p, m, 0.5f);
+  for (std::size_t i = 0; i < m.cost.size(); ++i) {
+    if (m.cost[i] == kUnreached) { EXPECT_EQ(exact[i], 0u); continue; }
+    EXPECT_EQ(exact[i], m.best_iteration[i] + 1);  // exact = the last improvement
+    EXPECT_LE(loose[i], exact[i]);
+    EXPECT_GE(loose[i], 1u);
+  }
+  EXPECT_LE(iteration_quantile(loose, 0.9), iteration_quantile(exact, 0.9));
+  EXPECT_EQ(iteration_quantile(exact, 1.0), static_cast<std::uint32_t>(m.converged_iteration(1.0)));
+}
