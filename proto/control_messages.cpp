@@ -2,6 +2,7 @@
 
 #include "proto/pose_frame.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace mc::proto {
@@ -31,7 +32,43 @@ TeamHello team_from(const json& j) {
   return t;
 }
 
+// Run-length code of a reach map's cells: "l37c2r14n5" (a letter, then its count).
+std::string rle_encode(const std::string& cells) {
+  std::string out;
+  for (std::size_t i = 0; i < cells.size();) {
+    std::size_t j = i;
+    while (j < cells.size() && cells[j] == cells[i]) ++j;
+    out += cells[i];
+    out += std::to_string(j - i);
+    i = j;
+  }
+  return out;
+}
+std::string rle_decode(const std::string& rle, std::size_t expected) {
+  std::string out;
+  for (std::size_t i = 0; i < rle.size();) {
+    const char c = rle[i++];
+    if (c != 'n' && c != 'l' && c != 'r' && c != 'c') throw std::runtime_error("reach_map cells: bad owner letter");
+    std::size_t n = 0, digits = 0;
+    while (i < rle.size() && rle[i] >= '0' && rle[i] <= '9' && digits < 7) {
+      n = n * 10 + static_cast<std::size_t>(rle[i++] - '0');
+      ++digits;
+    }
+    if (digits == 0 || n == 0 || n > expected - out.size()) throw std::runtime_error("reach_map cells: bad run length");
+    out.append(n, c);
+  }
+  if (out.size() != expected) throw std::runtime_error("reach_map cells do not cover the grid");
+  return out;
+}
+
 struct ToJson {
+  json operator()(const ReachMapUpdate& e) const {
+    json j = {{"type", "reach_map"}, {"seq", e.seq}, {"time", e.time},
+              {"grid", {{"w", e.width}, {"h", e.height}, {"cell", e.cell}, {"x0", e.x0}, {"y0", e.y0}}},
+              {"cells", rle_encode(e.cells)}};
+    if (e.ball_side != Side::Neutral) j["ball"] = {{"side", side_name(e.ball_side)}, {"unum", e.ball_unum}, {"t", e.ball_time}};
+    return j;
+  }
   json operator()(const KickEvent& e) const {
     return {{"type", "kick"}, {"seq", e.seq}, {"time", e.time}, {"side", side_name(e.side)}, {"unum", e.unum},
             {"foot", e.foot == Foot::Left ? "left" : "right"}, {"contact_time_ms", e.contact_time_ms}};
@@ -130,6 +167,27 @@ ControlMessage parse(const json& j, const std::string& type) {
     e.seq = j.at("seq").get<std::uint32_t>();
     e.server_time_ms = j.at("server_time_ms").get<std::uint64_t>();
     e.detail = j.value("detail", "");
+    return e;
+  }
+  if (type == "reach_map") {
+    ReachMapUpdate e;
+    e.seq = j.at("seq").get<std::uint32_t>();
+    e.time = j.at("time").get<int>();
+    const json& g = j.at("grid");
+    e.width = g.at("w").get<int>();
+    e.height = g.at("h").get<int>();
+    e.cell = g.at("cell").get<double>();
+    e.x0 = g.at("x0").get<double>();
+    e.y0 = g.at("y0").get<double>();
+    if (e.width < 1 || e.height < 1 || e.width > 512 || e.height > 512) throw std::runtime_error("grid size out of range");
+    if (!(e.cell > 0 && e.cell < 1000) || !(std::fabs(e.x0) < 1e4) || !(std::fabs(e.y0) < 1e4))
+      throw std::runtime_error("grid geometry out of range");
+    e.cells = rle_decode(j.at("cells").get<std::string>(), static_cast<std::size_t>(e.width) * static_cast<std::size_t>(e.height));
+    if (const auto b = j.find("ball"); b != j.end()) {
+      e.ball_side = side_from(b->at("side"));
+      e.ball_unum = unum_from(b->at("unum"));
+      e.ball_time = b->at("t").get<double>();
+    }
     return e;
   }
   throw std::invalid_argument("unknown control message type \"" + type + "\"");

@@ -75,8 +75,26 @@ struct FeedStatus {
   std::string detail;                // human-readable reason
 };
 
+// "reach_map": optional analysis overlay (issue 9), a few times per second
+// when the feed is asked for it: which team gets first to each cell of a grid
+// over the pitch (anim/mocap's capability model), and who gets first to the
+// ball. On the wire `cells` is run-length coded (SPEC.md section 5.4).
+struct ReachMapUpdate {
+  std::uint32_t seq = 0;
+  int time = 0;
+  int width = 0, height = 0;         // cells, at most 512 x 512
+  double cell = 2;                   // m
+  double x0 = -53, y0 = -34;         // m, lower corner of cell (0, 0) in field coordinates
+  // width * height characters, row by row (y major, +y first as in the field
+  // frame): 'n' nobody, 'l' left team first, 'r' right team first, 'c' contested.
+  std::string cells;
+  Side ball_side = Side::Neutral;    // who gets to the ball first (Neutral: nobody)
+  std::uint8_t ball_unum = 0;
+  double ball_time = 0;              // s from this frame
+};
+
 using ControlMessage =
-    std::variant<KickEvent, GoalEvent, PlayModeEvent, CardEvent, ScoreUpdate, TeamsUpdate, FeedStatus>;
+    std::variant<KickEvent, GoalEvent, PlayModeEvent, CardEvent, ScoreUpdate, TeamsUpdate, FeedStatus, ReachMapUpdate>;
 
 nlohmann::json control_to_json_value(const ControlMessage& message);
 std::string to_json(const ControlMessage& message);  // one line
