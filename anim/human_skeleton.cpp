@@ -45,13 +45,13 @@ SkeletonDef build() {
   add("r_shin", kRThigh, {0, -kThigh, 0}, "z", {{-155, 0}},
       box(0.10f, kShin, 0.10f, 0, -kShin / 2, 0));
   add("r_foot", kRShin, {0, -kShin, 0}, "zx", {{-60, 35}, {-30, 30}},
-      box(0.26f, kAnkleHeight, 0.10f, 0.06f, -kAnkleHeight / 2, 0));
+      box(kFootFront + kFootBack, kAnkleHeight, 0.10f, (kFootFront - kFootBack) / 2, -kAnkleHeight / 2, 0));
   add("l_thigh", kPelvis, {0, -kHipDrop, -kHipHalfWidth}, "zxy", {{-40, 130}, {-35, 50}, {-45, 45}},
       box(0.14f, kThigh, 0.14f, 0, -kThigh / 2, 0));
   add("l_shin", kLThigh, {0, -kThigh, 0}, "z", {{-155, 0}},
       box(0.10f, kShin, 0.10f, 0, -kShin / 2, 0));
   add("l_foot", kLShin, {0, -kShin, 0}, "zx", {{-60, 35}, {-30, 30}},
-      box(0.26f, kAnkleHeight, 0.10f, 0.06f, -kAnkleHeight / 2, 0));
+      box(kFootFront + kFootBack, kAnkleHeight, 0.10f, (kFootFront - kFootBack) / 2, -kAnkleHeight / 2, 0));
   return s;
 }
 

@@ -54,6 +54,7 @@ inline constexpr float kThigh = 0.44f;        // hip -> knee
 inline constexpr float kShin = 0.42f;         // knee -> ankle
 inline constexpr float kAnkleHeight = 0.08f;  // ankle above the sole
 inline constexpr float kFootFront = 0.19f;    // ankle -> toe tip, forward
+inline constexpr float kFootBack = 0.07f;     // ankle -> heel, backward
 inline constexpr float kStandPelvis = kHipDrop + kThigh + kShin + kAnkleHeight;  // 1.00
 }  // namespace dims
 

@@ -36,9 +36,11 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   m.foot = choose_foot(bz, dbz);
   const float side = m.foot == Foot::Right ? 1.0f : -1.0f;
 
-  // The sole turns towards the kick, as far as the hip allows.
+  // The sole turns towards the kick, up to 25 deg: with the pelvis twisted
+  // into the kick, more would take the hip's yaw past its limit (and the
+  // foot off the ball).
   const float kick_deg = std::atan2(dy, dx) / kDeg;
-  m.foot_yaw = wrap_deg(in.heading + clampf(delta_deg(kick_deg, in.heading), -40.0f, 40.0f));
+  m.foot_yaw = wrap_deg(in.heading + clampf(delta_deg(kick_deg, in.heading), -25.0f, 25.0f));
   // The front of the foot (kStrikeLocal in the quality tool: 0.19 m ahead of
   // the ankle, 0.04 m below it), pitched 15 deg toes-down, meets the back of the ball.
   constexpr float kPitch = -15.0f * kDeg;
@@ -69,7 +71,7 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   body.to_body(m.contact_x, m.contact_y, ax, az);
   body.to_body(m.support_x, m.support_y, px, pz);
   float ox = 0, oz = 0;
-  constexpr float kComfort = 0.45f;
+  constexpr float kComfort = kComfortReach;
   for (int it = 0; it < 4; ++it) {
     const float kx = ax - ox, kz = az - (oz + side * dims::kHipHalfWidth);
     const float kd = std::hypot(kx, kz);
@@ -79,18 +81,18 @@ ActionMotion plan_kick(const KickPlanInput& in) {
     if (qd > kComfort) { ox += qx * (qd - kComfort) / qd; oz += qz * (qd - kComfort) / qd; }
   }
   const float on = std::hypot(ox, oz);
-  if (on > 0.6f) { ox *= 0.6f / on; oz *= 0.6f / on; }
+  if (on > kMaxStepIn) { ox *= kMaxStepIn / on; oz *= kMaxStepIn / on; }
   float lx, ly;
   body.to_field(ox, oz, lx, ly);
   m.lunge_x = lx - in.root_x;
   m.lunge_y = ly - in.root_y;
-  // Pelvis as high as both legs allow at contact.
+  // Pelvis as high as both legs allow at contact (down to a deep lunge).
   const float hk = std::hypot(ax - ox, az - oz - side * dims::kHipHalfWidth);
   const float hs = std::hypot(px - ox, pz - oz + side * dims::kHipHalfWidth);
   const float r2 = kPlanReach * kPlanReach;
   const float top_k = m.contact_h + std::sqrt(std::max(r2 - hk * hk, 0.09f)) + dims::kHipDrop;
   const float top_s = dims::kAnkleHeight + std::sqrt(std::max(r2 - hs * hs, 0.09f)) + dims::kHipDrop;
-  m.pelvis_height = clampf(std::min(top_k, top_s), 0.7f, 0.93f);
+  m.pelvis_height = clampf(std::min(top_k, top_s), 0.62f, 0.93f);
 
   // Timing: preparation as long as the look-ahead allows (up to 0.3 s, the
   // measured swing start), and a stance on the support foot that the moving

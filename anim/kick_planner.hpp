@@ -54,5 +54,11 @@ bool merge_kick(ActionMotion& m, double contact_time_s, std::uint64_t pos, doubl
 
 // Reach used to plan: hip -> ankle (m) with a soft knee.
 inline constexpr float kPlanReach = 0.82f;
+// Longest step-in (m). It moves the root on the contact frame alone (the
+// root lies on the 2D position at both cycles around it), so a longer one
+// reads as a jerk; past it, a lower pelvis and a longer stride reach instead.
+inline constexpr float kMaxStepIn = 0.3f;
+// Horizontal hip -> ankle distance (m) the planner accepts before stepping in.
+inline constexpr float kComfortReach = 0.6f;
 
 }  // namespace mc::anim

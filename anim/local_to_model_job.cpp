@@ -44,8 +44,10 @@ bool LocalToModelJob::Run() const {
   const float* a = angles_deg.data();
   for (std::size_t i = 0; i < joints.size(); ++i) {
     const JointDef& j = joints[i];
-    const glm::mat3 r = joint_rotation(j.dofs, a);
+    const float* ja = a;
     a += j.dofs.size();
+    if (i < 32 && (joint_mask & (1u << i)) == 0) continue;
+    const glm::mat3 r = joint_rotation(j.dofs, ja);
     glm::mat4 local(r);
     local[3] = glm::vec4(j.offset_ls[0], j.offset_ls[1], j.offset_ls[2], 1.0f);
     if (j.parent < 0) {

@@ -6,6 +6,7 @@
 // heading) is not applied here; see body_frame.hpp for that.
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include <glm/mat3x3.hpp>
@@ -25,6 +26,9 @@ struct LocalToModelJob {
   std::span<const float> angles_deg;  // in: dof_count() angles, SkeletonDef order
   glm::vec3 root_ms{0.0f};            // in: root joint position, model space (m)
   std::span<glm::mat4> models;        // out: one model-space transform per joint
+  // Joints to compute, bit i for joint i (after ozz's from/to options); the
+  // others' transforms are left as they were. A joint's parent must be in it.
+  std::uint32_t joint_mask = ~0u;
 
   // False when the skeleton is missing, a parent does not precede its child,
   // or a span is shorter than the skeleton needs.

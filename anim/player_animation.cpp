@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "anim/body_frame.hpp"
+#include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/leg_pose_job.hpp"
 #include "anim/local_to_model_job.hpp"
@@ -122,6 +123,8 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   } else if (act != nullptr && w > 0.5f) {
     lo.planted[0] = lo.planted[1] = false;  // tackles, catches, dives: feet are not held
   }
+  // A pitched sole rolls over its heel or toes rather than sink into the grass.
+  for (FootTarget& f : feet) f.ankle_ms[1] = std::max(f.ankle_ms[1], min_ankle_height(f.pitch_deg));
   LegPoseJob legs;
   legs.pelvis_height = pelvis_h;
   legs.feet[0] = feet[0];
@@ -150,6 +153,26 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   }
   ctx.was_in_action = w > 0;
   clamp_to_limits(limits_from, a);
+  // Nothing goes under the grass: a sole that the joint limits or the speed
+  // limit left pitched into it turns level at the ankle, and what is still
+  // under (a whole-body action's pose, given as angles, or a leg the speed
+  // limit held short) lifts the body: it rests on the grass.
+  {
+    // Outside whole-body actions only the feet can reach the grass: the
+    // legs alone are posed (a third of the work).
+    const bool whole = act != nullptr && act->whole_body && w > 0;
+    std::array<glm::mat4, kHumanJointCount> m;
+    LocalToModelJob fk{&limits_from, std::span<const float>(a.data(), a.size()), glm::vec3(0, pelvis_h, 0), m};
+    if (!whole) fk.joint_mask = kLegJoints;
+    if (fk.Run()) {
+      for (const auto& [joint, d] : {std::pair{kRFoot, dof::kRAnkle}, std::pair{kLFoot, dof::kLAnkle}}) {
+        const float last = ctx.last_angles[static_cast<std::size_t>(d)];
+        level_foot(limits_from, m, a, joint, d, free ? -INFINITY : last - kMaxJointStepDeg,
+                   free ? INFINITY : last + kMaxJointStepDeg);
+      }
+      pelvis_h += std::max(0.0f, -lowest_point_ms(limits_from, m, whole ? kAllJoints : kFeetJoints));
+    }
+  }
   // A foot touching down where the speed limit let it reach (not quite its
   // target) is held there, so that its stance does not start with a slide;
   // a released foot swings off from where it is.

@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "anim/body_frame.hpp"
+#include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/local_to_model_job.hpp"
 
@@ -149,6 +150,16 @@ QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& st
       }
       // Stances of planted feet.
       pose_models(skel, pose, m);
+      const float lowest = lowest_point_ms(skel, m);
+      if (lowest < -kGroundTolerance && std::getenv("MATCHCAST_ANIM_GROUND") != nullptr)
+        std::fprintf(stderr, "ground %.3f seq %u slot %zu %s%s\n", lowest, f.seq, p, action_name(pi.action),
+                     pi.in_action ? " (in action)" : "");
+      if (lowest < r.lowest_m) {
+        r.lowest_m = lowest;
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "seq %u, slot %zu (%s)", f.seq, p, action_name(pi.action));
+        r.lowest_where = buf;
+      }
       for (int foot = 0; foot < 2; ++foot) {
         Stance& s = stance[p][static_cast<std::size_t>(foot)];
         const glm::vec3 ankle = to_field(pose, glm::vec3(m[static_cast<std::size_t>(foot_joint[foot])][3]));
@@ -193,6 +204,11 @@ QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& st
     const double d = std::sqrt((strike.x - b.x) * (strike.x - b.x) + (strike.y - b.y) * (strike.y - b.y) +
                                (strike.z - b.z) * (strike.z - b.z));
     r.contact_m.values.push_back(std::fabs(d - ball_r));
+    if (fi > 0 && fi + 1 < frames.size()) {  // the step-in: how far the root leaves its path for the contact
+      const PlayerPose& a = frames[fi - 1].players[p];
+      const PlayerPose& c = frames[fi + 1].players[p];
+      r.step_in_m.values.push_back(std::hypot(pose.x - 0.5 * (a.x + c.x), pose.y - 0.5 * (a.y + c.y)));
+    }
     if (std::getenv("MATCHCAST_ANIM_CONTACTS") != nullptr && std::fabs(d - ball_r) > 0.1)
       std::fprintf(stderr, "contact %.3f seq %u slot %zu foot %d ball %.2f %.2f root %.2f %.2f h %.0f\n", std::fabs(d - ball_r),
                    e.seq, p, static_cast<int>(e.foot), b.x, b.y, pose.x, pose.y, pose.heading);
@@ -203,11 +219,12 @@ QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& st
 
 bool targets_hold(const QualityReport& r) {
   return r.root_error_m.max() <= 0.01 && r.slide_m.mean() <= 0.02 && r.contact_m.mean() <= 0.05 &&
-         r.cadence.max() <= 4.5 && r.limit_violations == 0 && r.max_jump_deg <= 15.0;
+         r.cadence.max() <= 4.5 && r.limit_violations == 0 && r.max_jump_deg <= 15.0 &&
+         r.lowest_m >= -kGroundTolerance && r.step_in_m.max() <= kMaxStepInTarget + 1e-3;
 }
 
 std::string format_report(const QualityReport& r) {
-  char buf[2048];
+  char buf[3072];
   auto pf = [](bool ok) { return ok ? "PASS" : "FAIL"; };
   std::snprintf(
       buf, sizeof buf,
@@ -219,14 +236,18 @@ std::string format_report(const QualityReport& r) {
       "joint-limit violations   %ld                              target 0           %s\n"
       "largest joint jump       %.2f deg at %s   target <= 15 deg   %s\n"
       "  joint-frames over 15 deg: %ld of %ld (%.4f%%); largest outside legs in a continuing stance: %.2f deg\n"
-      "  (neck/head yaw, which follow the server's neck angle exactly: largest jump %.1f deg, not counted)\n",
+      "  (neck/head yaw, which follow the server's neck angle exactly: largest jump %.1f deg, not counted)\n"
+      "lowest body point        %.4f m at %s   target >= -%.2f m   %s\n"
+      "step-in root offset      mean %.4f m  p95 %.4f m  max %.4f m   target <= %.2f m   %s\n",
       r.frames, r.kicks, r.root_error_m.max(), r.root_error_m.mean(), pf(r.root_error_m.max() <= 0.01),
       r.slide_m.mean(), r.slide_m.percentile(95), r.slide_m.max(), r.max_slide_where.c_str(), r.slide_m.values.size(),
       pf(r.slide_m.mean() <= 0.02), r.contact_m.mean(), r.contact_m.percentile(95), r.contact_m.max(),
       pf(r.contact_m.mean() <= 0.05), r.cadence.max(), r.max_cadence_where.c_str(), r.cadence.percentile(99), r.cadence.mean(),
       r.cadence.values.size(), pf(r.cadence.max() <= 4.5), r.limit_violations, pf(r.limit_violations == 0),
       r.max_jump_deg, r.max_jump_where.c_str(), pf(r.max_jump_deg <= 15.0), r.jumps_over_15, r.joint_frames,
-      100.0 * static_cast<double>(r.jumps_over_15) / static_cast<double>(std::max(1L, r.joint_frames)), r.max_jump_swing_deg, r.max_head_jump_deg);
+      100.0 * static_cast<double>(r.jumps_over_15) / static_cast<double>(std::max(1L, r.joint_frames)), r.max_jump_swing_deg, r.max_head_jump_deg,
+      r.lowest_m, r.lowest_where.c_str(), kGroundTolerance, pf(r.lowest_m >= -kGroundTolerance), r.step_in_m.mean(),
+      r.step_in_m.percentile(95), r.step_in_m.max(), kMaxStepInTarget, pf(r.step_in_m.max() <= kMaxStepInTarget + 1e-3));
   return buf;
 }
 

@@ -1,7 +1,8 @@
 // The quality metrics of an animated log, each with its target (issue 4):
 // root error at cycles, planted-foot slide, foot-to-ball distance at kick
 // contact, cadence, joint-limit violations and the largest per-frame joint
-// jump outside kicks and teleports.
+// jump outside kicks and teleports; also how far a body goes under the grass
+// and how far the step-in moves the root on a kick's contact frame.
 #pragma once
 
 #include <string>
@@ -28,6 +29,9 @@ struct QualityReport {
   Distribution slide_m;          // per stance: largest horizontal distance of the ankle from its landing spot
   Distribution contact_m;        // per kick: | |strike point - ball centre| - ball radius |
   Distribution cadence;          // per stride (two steps): steps/s
+  Distribution step_in_m;        // per kick: root offset on the contact frame from the mid-point of its neighbours
+  double lowest_m = 0;           // lowest point of any drawn segment of any active player (0 = the grass)
+  std::string lowest_where;      // frame, player and action of that point
   long limit_violations = 0;     // angles outside their joint's limits (0.01 deg tolerance)
   double max_jump_deg = 0;       // largest |angle change| between frames outside actions and resets
   std::string max_jump_where;    // frame, player and dof of that jump
@@ -45,6 +49,13 @@ glm::vec3 joint_point_field(const SkeletonDef& skeleton, const PlayerPose& pose,
 
 // The point of the foot that strikes the ball: front of the foot, mid height (foot local space).
 inline constexpr float kStrikeLocal[3] = {0.19f, -0.04f, 0.0f};
+
+// No drawn segment goes further under the grass than this (m): a body rests
+// on the grass, it is not buried in it.
+inline constexpr double kGroundTolerance = 0.02;
+// Largest root offset a step-in may add on a kick's contact frame (m): the
+// root leaves its path for that one frame only, so more reads as a jerk.
+inline constexpr double kMaxStepInTarget = 0.30;
 
 // Measures everything over a whole animated log. `states` are the input in
 // stream order (frames refer to them by seq / 2).

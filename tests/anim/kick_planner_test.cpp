@@ -67,9 +67,13 @@ TEST(PlanKick, StepsInOnlyWhenTheFootCannotReach) {
   const ActionMotion near = plan_kick(kick_at(0.35f, 0.15f, 0));
   EXPECT_NEAR(std::hypot(near.lunge_x, near.lunge_y), 0.0f, 1e-4f);
   const ActionMotion far = plan_kick(kick_at(1.0f, 0.3f, 0));
-  EXPECT_GT(std::hypot(far.lunge_x, far.lunge_y), 0.2f);
-  EXPECT_LE(std::hypot(far.lunge_x, far.lunge_y), 0.6f + 1e-4f);
+  EXPECT_GT(std::hypot(far.lunge_x, far.lunge_y), 0.1f);
+  EXPECT_LE(std::hypot(far.lunge_x, far.lunge_y), kMaxStepIn + 1e-4f);
   EXPECT_GT(far.lunge_x, 0.0f);  // towards the ball
+  // Beyond what a step-in may add, the rest is left to a deep lunge.
+  const ActionMotion farther = plan_kick(kick_at(1.4f, 0.3f, 0));
+  EXPECT_NEAR(std::hypot(farther.lunge_x, farther.lunge_y), kMaxStepIn, 1e-4f);
+  EXPECT_LT(farther.pelvis_height, far.pelvis_height);
 }
 
 TEST(MergeKick, KicksInConsecutiveCyclesBecomeOneLongerKick) {

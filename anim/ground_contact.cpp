@@ -1,0 +1,82 @@
+#include "anim/ground_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/vec4.hpp>
+
+#include "anim/human_skeleton.hpp"
+#include "anim/local_to_model_job.hpp"
+
+namespace mc::anim {
+
+float segment_lowest_ms(const Segment& seg, const glm::mat4& m) {
+  // Height is the model matrix's Y row applied to a local point; its lowest
+  // over a box is the centre's less each half extent times |its Y weight|
+  // (a sphere's: the centre's less the radius, rotations keep it a sphere).
+  const float cy = m[0][1] * seg.center[0] + m[1][1] * seg.center[1] + m[2][1] * seg.center[2] + m[3][1];
+  if (seg.shape == SegmentShape::Sphere) return cy - seg.size[0];
+  return cy - 0.5f * (std::fabs(m[0][1]) * seg.size[0] + std::fabs(m[1][1]) * seg.size[1] +
+                      std::fabs(m[2][1]) * seg.size[2]);
+}
+
+float lowest_point_ms(const SkeletonDef& skeleton, std::span<const glm::mat4> models, std::uint32_t mask) {
+  float lowest = INFINITY;
+  const std::size_t n = std::min(skeleton.joints.size(), models.size());
+  for (std::size_t j = 0; j < n; ++j)
+    if (j >= 32 || (mask & (1u << j)) != 0) lowest = std::min(lowest, segment_lowest_ms(skeleton.joints[j].segment, models[j]));
+  return lowest;
+}
+
+float level_foot(const SkeletonDef& skeleton, std::span<glm::mat4> models, std::span<float> angles, int foot,
+                 int ankle_dof, float lo_deg, float hi_deg) {
+  const JointDef& j = skeleton.joints[static_cast<std::size_t>(foot)];
+  const glm::mat4& parent = models[static_cast<std::size_t>(j.parent)];
+  float* a = &angles[static_cast<std::size_t>(ankle_dof)];
+  auto model_at = [&](float pitch) {
+    float deg[3] = {pitch, j.dofs.size() > 1 ? a[1] : 0.0f, j.dofs.size() > 2 ? a[2] : 0.0f};
+    glm::mat4 local(joint_rotation(j.dofs, deg));
+    local[3] = glm::vec4(j.offset_ls[0], j.offset_ls[1], j.offset_ls[2], 1.0f);
+    return parent * local;
+  };
+  glm::mat4& m = models[static_cast<std::size_t>(foot)];
+  float best = segment_lowest_ms(j.segment, m);
+  constexpr float kOnGrass = -1e-4f;  // float rounding of a sole lying on the grass
+  if (best >= kOnGrass) return best;
+  // Level is where the sole's forward axis, parent rotation * Rz(pitch) *
+  // +X, has no height: tan(pitch) = -P[0][1] / P[1][1]. Between the start
+  // and level (within the bounds) the lowest corner rises; bisect for the
+  // smallest turn that clears, or stop at level when even level does not.
+  const glm::mat4 pt = [&] {
+    glm::mat4 t(1.0f);
+    t[3] = glm::vec4(j.offset_ls[0], j.offset_ls[1], j.offset_ls[2], 1.0f);
+    return parent * t;
+  }();
+  const float level = std::atan2(-pt[0][1], pt[1][1]) * (180.0f / 3.14159265f);
+  const float lo = std::max(j.limits[0][0], lo_deg), hi = std::min(j.limits[0][1], hi_deg);
+  float best_pitch = std::clamp(level, lo, hi);
+  best = segment_lowest_ms(j.segment, model_at(best_pitch));
+  if (best >= kOnGrass) {
+    float out = a[0];
+    for (int k = 0; k < 10; ++k) {  // to 1/1024 of the turn
+      const float mid = 0.5f * (best_pitch + out);
+      const float low = segment_lowest_ms(j.segment, model_at(mid));
+      if (low >= kOnGrass) { best_pitch = mid; best = low; }
+      else out = mid;
+    }
+  }
+  a[0] = best_pitch;
+  m = model_at(best_pitch);
+  return best;
+}
+
+float min_ankle_height(float pitch_deg) {
+  constexpr float kDegToRad = 3.14159265f / 180.0f;
+  const float s = std::sin(pitch_deg * kDegToRad), c = std::cos(pitch_deg * kDegToRad);
+  // Sole corners in the foot's frame: (forward, down) = (kFootFront, -h), (-kFootBack, -h).
+  const float toe = dims::kFootFront * s - dims::kAnkleHeight * c;
+  const float heel = -dims::kFootBack * s - dims::kAnkleHeight * c;
+  return -std::min(toe, heel);
+}
+
+}  // namespace mc::anim

@@ -1,0 +1,92 @@
+#include "anim/ground_contact.hpp"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "anim/action_motion.hpp"
+#include "anim/human_skeleton.hpp"
+#include "anim/local_to_model_job.hpp"
+#include "anim/player_animation.hpp"
+
+namespace mc::anim {
+namespace {
+
+std::vector<glm::mat4> pose_models(const std::array<float, kMaxDof>& a, float pelvis_h) {
+  std::vector<glm::mat4> m(human_skeleton().joints.size());
+  LocalToModelJob fk{&human_skeleton(), a, glm::vec3(0, pelvis_h, 0), m};
+  EXPECT_TRUE(fk.Run());
+  return m;
+}
+
+// Standing straight, the soles are on the grass: the lowest point is 0.
+TEST(GroundContact, RestPoseStandsOnTheGrass) {
+  const std::array<float, kMaxDof> a{};
+  const auto m = pose_models(a, dims::kStandPelvis);
+  EXPECT_NEAR(lowest_point_ms(human_skeleton(), m), 0.0f, 1e-5f);
+  const auto low = pose_models(a, dims::kStandPelvis - 0.1f);
+  EXPECT_NEAR(lowest_point_ms(human_skeleton(), low), -0.1f, 1e-5f);
+}
+
+// A pitched sole needs the ankle higher: by the toe's drop when toes down,
+// by the heel's when toes up; level, the ankle height itself.
+TEST(GroundContact, MinAnkleHeightFollowsThePitch) {
+  EXPECT_NEAR(min_ankle_height(0), dims::kAnkleHeight, 1e-6f);
+  const float r = 20.0f * 3.14159265f / 180.0f;
+  EXPECT_NEAR(min_ankle_height(-20), dims::kFootFront * std::sin(r) + dims::kAnkleHeight * std::cos(r), 1e-5f);
+  EXPECT_NEAR(min_ankle_height(20), dims::kFootBack * std::sin(r) + dims::kAnkleHeight * std::cos(r), 1e-5f);
+}
+
+// A foot pitched toes-down into the grass turns level by the smallest
+// angle, and not further than the bounds it is given.
+TEST(GroundContact, LevelFootTurnsTheAnkleAsLittleAsPossible) {
+  std::array<float, kMaxDof> a{};
+  a[dof::kRAnkle] = -30;  // toes down
+  auto m = pose_models(a, dims::kStandPelvis);
+  ASSERT_LT(segment_lowest_ms(human_skeleton().joints[kRFoot].segment, m[kRFoot]), -0.05f);
+  const float after = level_foot(human_skeleton(), m, a, kRFoot, dof::kRAnkle);
+  EXPECT_GE(after, -1e-4f);
+  EXPECT_NEAR(a[dof::kRAnkle], 0.0f, 1.01f);  // level is the nearest pitch that clears
+  // The model transform written back is the one FK gives for the new angle.
+  const auto again = pose_models(a, dims::kStandPelvis);
+  EXPECT_NEAR(after, segment_lowest_ms(human_skeleton().joints[kRFoot].segment, again[kRFoot]), 1e-5f);
+
+  a[dof::kRAnkle] = -30;
+  m = pose_models(a, dims::kStandPelvis);
+  const float bounded = level_foot(human_skeleton(), m, a, kRFoot, dof::kRAnkle, -44, -16);
+  EXPECT_FLOAT_EQ(a[dof::kRAnkle], -16.0f);  // as far as allowed, still under
+  EXPECT_LT(bounded, 0.0f);
+}
+
+// Tackles, catches and dives are given as joint angles; whatever their
+// weight, the animated body rests on the grass and is not buried in it.
+TEST(GroundContact, WholeBodyActionsRestOnTheGrass) {
+  for (MotionKind kind : {MotionKind::Tackle, MotionKind::Catch, MotionKind::Dive}) {
+    ActionMotion motion;
+    motion.kind = kind;
+    motion.start_s = -0.15f;
+    motion.end_s = 0.9f;
+    float lowest_seen = 1;
+    PlayerAnim ctx;
+    for (float tau = -0.15f; tau <= 0.9f; tau += 0.05f) {
+      const ActionSample layer = sample_action(motion, tau, 0, 0, 0);
+      PlayerFrameInput in;
+      in.action = Action::Tackle;
+      in.layer = &layer;
+      in.reset = tau < -0.1f;
+      PlayerPose out;
+      animate_player(ctx, in, LocomotionParams{}, human_skeleton(), out);
+      std::array<float, kMaxDof> a{};
+      for (int d = 0; d < dof::kCount; ++d) a[static_cast<std::size_t>(d)] = out.angles[static_cast<std::size_t>(d)];
+      const float low = lowest_point_ms(human_skeleton(), pose_models(a, out.z));
+      EXPECT_GE(low, -1e-3f) << "kind " << static_cast<int>(kind) << " tau " << tau;
+      lowest_seen = std::min(lowest_seen, low);
+    }
+    EXPECT_LT(lowest_seen, 0.05f) << "kind " << static_cast<int>(kind);  // and it does reach the grass
+  }
+}
+
+}  // namespace
+}  // namespace mc::anim
