@@ -69,6 +69,8 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
+  // Before the recorders: each live recording is also its channel's time shift.
+  mc::replay::ReplayCatalog replays(options->record_dir);
   std::vector<std::shared_ptr<mc::app::Recorder>> recorders;
   std::mutex recorders_mutex;  // an edge starts its recorders from its own thread
   auto record = [&](const std::shared_ptr<mc::relay::Channel>& channel) {
@@ -77,8 +79,12 @@ int main(int argc, char** argv) {
     std::string why;
     auto rec = mc::app::Recorder::start(channel, path, why);
     std::lock_guard lock(recorders_mutex);
-    if (rec) recorders.push_back(std::move(rec));
-    else mc::relay::log_event("recording_failed", why);
+    if (rec) {
+      replays.set_live_recording(channel->name(), std::filesystem::path(path).filename().string());
+      recorders.push_back(std::move(rec));
+    } else {
+      mc::relay::log_event("recording_failed", why);
+    }
   };
   if (!options->record_dir.empty()) {
     std::error_code ec;
@@ -94,18 +100,17 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "matchcast-server: %s\n", error.c_str());
     return 1;
   }
-  mc::replay::ReplayCatalog replays(options->record_dir);
   mc::relay::RelayServer server(options->relay, channels, &feeds, &replays);
   if (!server.start(error)) {
     std::fprintf(stderr, "matchcast-server: %s\n", error.c_str());
-    if (options->relay.port != 0)
+    if (options->relay.port != 0 && error.rfind("cannot listen", 0) == 0)
       std::fprintf(stderr, "Is another program using port %u? Try --port 0 or --port N.\n",
                    options->relay.port);
     return 1;
   }
   const std::string host =
       options->relay.address == "0.0.0.0" ? "127.0.0.1" : options->relay.address;
-  std::printf("Matchcast: open http://%s:%u/\n", host.c_str(), server.port());
+  std::printf("Matchcast: open %s://%s:%u/\n", server.tls() ? "https" : "http", host.c_str(), server.port());
   std::fflush(stdout);
   mc::relay::log_event("listening", host + ":" + std::to_string(server.port()));
 

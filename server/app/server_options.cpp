@@ -58,6 +58,9 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
         "record every live channel here and offer the recordings for replay (empty: off)")
     ("control-token", po::value(&o.relay.control_token),
         "bearer token for POST /control/... (default: control disabled)")
+    ("tls-cert", po::value(&o.relay.tls_cert_file),
+        "PEM certificate (chain) file: with --tls-key, the port speaks HTTPS and WSS only")
+    ("tls-key", po::value(&o.relay.tls_key_file), "PEM private key file of --tls-cert")
     ("role", po::value(&role)->default_value(role),
         "standalone (one machine, no NATS), origin (publish the feeds on NATS), "
         "edge (serve games from NATS, no feeds) or both")

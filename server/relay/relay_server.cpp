@@ -1,6 +1,9 @@
 #include "server/relay/relay_server.hpp"
 
 #include <boost/asio/ip/address.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 
 #include "server/relay/listener.hpp"
 #include "server/relay/websocket_session.hpp"
@@ -44,6 +47,16 @@ bool RelayServer::load_tls(std::string& error) {
   if (config_.tls_cert_file.empty() || config_.tls_key_file.empty()) {
     error = "TLS needs both --tls-cert and --tls-key";
     return false;
+  }
+  for (const auto* file : {&config_.tls_cert_file, &config_.tls_key_file}) {
+    // OpenSSL's own message for a missing file is only "asio.ssl error".
+    if (std::FILE* f = std::fopen(file->c_str(), "rb")) {
+      std::fclose(f);
+    } else {
+      error = std::string("cannot load the TLS ") + (file == &config_.tls_cert_file ? "certificate " : "key ") +
+              *file + ": " + std::strerror(errno);
+      return false;
+    }
   }
   tls_.emplace(net::ssl::context::tls_server);
   tls_->set_options(net::ssl::context::default_workarounds | net::ssl::context::no_sslv2 |
