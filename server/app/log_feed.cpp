@@ -6,6 +6,7 @@
 #include "anim/animator.hpp"
 #include "anim/event_messages.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/mocap/reach_map_publisher.hpp"
 #include "proto/control_messages.hpp"
 #include "proto/frame_codec.hpp"
 #include "proto/hello.hpp"
@@ -150,6 +151,10 @@ bool LogFeed::play_once() {
   std::vector<PoseFrame> frames;
   std::vector<anim::AnimEvent> events;
   std::size_t next_event = 0;
+  std::unique_ptr<anim::mocap::ReachMapPublisher> reach;
+  if (config_.reach_model)
+    reach = std::make_unique<anim::mocap::ReachMapPublisher>(config_.reach_model, config_.reach_every_states);
+  std::vector<proto::ReachMapUpdate> reach_pending;
   const auto interval = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double, std::milli>(kFrameIntervalMs / config_.speed));
   auto deadline = Clock::now();
@@ -167,6 +172,13 @@ bool LogFeed::play_once() {
       const std::int64_t shift = static_cast<std::int64_t>(next_seq_) - f.seq;
       for (; next_event < events.size() && events[next_event].seq <= f.seq; ++next_event)
         publish_event(events[next_event], shift);
+      // Reach maps go out with the first frame at or after their cycle.
+      std::size_t sent = 0;
+      for (; sent < reach_pending.size() && reach_pending[sent].time <= f.time; ++sent) {
+        reach_pending[sent].seq = next_seq_;
+        channel_->publish_control(proto::to_json(proto::ControlMessage{reach_pending[sent]}));
+      }
+      reach_pending.erase(reach_pending.begin(), reach_pending.begin() + static_cast<std::ptrdiff_t>(sent));
       f.seq = next_seq_++;
       f.server_time_ms = unix_ms();
       bool key = false;
@@ -204,6 +216,10 @@ bool LogFeed::play_once() {
   };
 
   do {
+    if (reach) {
+      proto::ReachMapUpdate m;
+      if (reach->push(state, source->params(), m)) reach_pending.push_back(std::move(m));
+    }
     animator.push(state, frames, &events);
     if (!publish(frames)) return false;
   } while (next_state());

@@ -18,7 +18,7 @@ export function bindControls(app, canvas) {
     b.addEventListener('click', () => b.classList.toggle('on', app.toggle(b.dataset.toggle)));
   }
 
-  const keyToggles = { KeyN: 'labels', KeyO: 'offside', KeyR: 'reach', KeyM: 'sound', KeyI: 'stats' };
+  const keyToggles = { KeyN: 'labels', KeyO: 'offside', KeyR: 'reach', KeyT: 'reachmap', KeyM: 'sound', KeyI: 'stats' };
   window.addEventListener('keydown', (e) => {
     if (e.target.closest?.('input,select,textarea') || e.ctrlKey || e.metaKey || e.altKey) return;
     const cam = CAMERA_MODES.find((m) => m.key === e.key);

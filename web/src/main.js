@@ -45,7 +45,7 @@ let helloKey = '';
 let timeshiftKey = null;
 let selected = null;
 let view = null;          // the interpolated frame on screen
-const toggles = { labels: true, offside: false, reach: false, sound: true, stats: params.has('stats') };
+const toggles = { labels: true, offside: false, reach: false, reachmap: false, sound: true, stats: params.has('stats') };
 const counters = { frames: 0, decoded: 0, skipped: 0, decodeErrors: 0, badMessages: 0, hellos: 0,
   rendered: 0 };
 let connection = 'connecting';
@@ -79,6 +79,7 @@ function applyHello(msg) {
     overlays = new Overlays(stage.scene, field, info.params);
     overlays.showOffside = toggles.offside;
     overlays.showReach = toggles.reach;
+    overlays.showReachMap = toggles.reachmap;
     const kl = makeKit('left', info.teams.left), kr = makeKit('right', info.teams.right);
     hud.setTeams({ name: kl.name, css: `#${kl.shirtColor.getHexString()}` },
       { name: kr.name, css: `#${kr.shirtColor.getHexString()}` });
@@ -182,6 +183,9 @@ function onControl(msg) {
   lastControl = msg.type;
   if (events.control(msg)) return;
   if (msg.type === 'replay' && serverReplay) serverReplay.status(msg);
+  else if (msg.type === 'reach_map') {
+    if (overlays && players) overlays.setReachMap(msg, { 1: players.kits[1].shirtColor, [-1]: players.kits[-1].shirtColor });
+  }
   else if (msg.type === 'feed') {
     if (msg.status === 'lost') hud.status(`The match feed is lost${msg.detail ? ` (${msg.detail})` : ''}. Waiting for it…`, true);
     else if (msg.status === 'back') hud.status(null);
@@ -244,6 +248,7 @@ const app = {
     if (name === 'labels' && players) players.showLabels = toggles.labels;
     if (name === 'offside' && overlays) overlays.showOffside = toggles.offside;
     if (name === 'reach' && overlays) overlays.showReach = toggles.reach;
+    if (name === 'reachmap' && overlays) overlays.showReachMap = toggles.reachmap;
     if (name === 'sound') sound.enabled = toggles.sound;
     if (name === 'stats') hud.showStats(toggles.stats);
     return toggles[name];

@@ -1,5 +1,7 @@
-// Tactical overlays drawn on the grass: the offside line of each team and
-// the reach of every player (kickable circle; the goalie's catch area).
+// Tactical overlays drawn on the grass: the offside line of each team, the
+// reach of every player (kickable circle; the goalie's catch area), and the
+// reach map when the stream carries one ("reach_map" messages, SPEC 5.4:
+// which team gets first to each cell, from human motion capture).
 // When the stream carries the data (frame.extras.offside = {l, r} in field
 // x), it is used; otherwise the line is derived from the positions the
 // stream carries (second-last defender or the ball, within the own half).
@@ -32,6 +34,56 @@ export class Overlays {
     this.reach = [];
     this.showOffside = false;
     this.showReach = false;
+    this.showReachMap = false;
+    this.reachMap = null;    // { mesh, texture, w, h, cell, x0, y0 }
+    this.reachColors = null; // the colours the last map was painted with
+  }
+
+  // Run-length "l37c2r14n5" -> one letter per cell, or null when malformed.
+  static decodeCells(rle, count) {
+    let out = '';
+    const re = /([nlrc])(\d{1,7})/gy;
+    let m;
+    while ((m = re.exec(rle)) !== null) {
+      const n = Number(m[2]);
+      if (n < 1 || out.length + n > count) return null;
+      out += m[1].repeat(n);
+      if (re.lastIndex === rle.length) break;
+    }
+    return out.length === count && re.lastIndex === rle.length ? out : null;
+  }
+
+  // A "reach_map" message: paints a translucent texture over its grid
+  // (left team colour, right team colour, white where contested).
+  setReachMap(msg, colors) {
+    const g = msg?.grid;
+    if (!g || !(g.w > 0 && g.h > 0 && g.w <= 512 && g.h <= 512 && g.cell > 0)) return false;
+    const cells = Overlays.decodeCells(String(msg.cells ?? ''), g.w * g.h);
+    if (!cells) return false;
+    let rm = this.reachMap;
+    if (!rm || rm.w !== g.w || rm.h !== g.h || rm.cell !== g.cell || rm.x0 !== g.x0 || rm.y0 !== g.y0) {
+      if (rm) { this.group.remove(rm.mesh); rm.texture.dispose(); rm.mesh.geometry.dispose(); rm.mesh.material.dispose(); }
+      const data = new Uint8Array(g.w * g.h * 4);
+      const texture = new THREE.DataTexture(data, g.w, g.h, THREE.RGBAFormat);
+      texture.magFilter = THREE.NearestFilter;
+      texture.minFilter = THREE.NearestFilter;
+      const mesh = new THREE.Mesh(new THREE.PlaneGeometry(g.w * g.cell, g.h * g.cell),
+        new THREE.MeshBasicMaterial({ map: texture, transparent: true, depthWrite: false }));
+      mesh.rotation.x = -Math.PI / 2;
+      mesh.position.set(g.x0 + g.w * g.cell / 2, 0.025, g.y0 + g.h * g.cell / 2);
+      this.group.add(mesh);
+      rm = this.reachMap = { mesh, texture, data, w: g.w, h: g.h, cell: g.cell, x0: g.x0, y0: g.y0 };
+    }
+    const rgb = (c) => [Math.round(c.r * 255), Math.round(c.g * 255), Math.round(c.b * 255)];
+    const paint = { l: [...rgb(colors[1]), 90], r: [...rgb(colors[-1]), 90], c: [255, 255, 255, 70], n: [0, 0, 0, 0] };
+    // Texture row 0 is the plane's bottom edge, which lies at field +y.
+    for (let j = 0; j < g.h; j++) {
+      const row = (g.h - 1 - j) * g.w;
+      for (let i = 0; i < g.w; i++) rm.data.set(paint[cells[j * g.w + i]], (row + i) * 4);
+    }
+    rm.texture.needsUpdate = true;
+    rm.ball = msg.ball ?? null;
+    return true;
   }
 
   _reachMesh(i) {
@@ -64,6 +116,7 @@ export class Overlays {
 
   update(view, colors) {
     const F = this.field;
+    if (this.reachMap) this.reachMap.mesh.visible = this.showReachMap;
     for (const [k, side] of [[0, 1], [1, -1]]) {
       const line = this.offside[k];
       let x = null;
