@@ -266,8 +266,14 @@ void App::on_scroll(double dy) {
 }
 
 int App::run_window() {
-  double last = glfwGetTime();
+  const double start = glfwGetTime();
+  double last = start;
+  // Figures printed with --quit-after: what a slow GPU or network did.
+  long drawn = 0;
+  std::uint64_t skips = 0;
+  double lag_sum = 0, lag_max = 0, lag_last = 0;
   while (!glfwWindowShouldClose(window_)) {
+    if (options_.quit_after_s > 0 && glfwGetTime() - start >= options_.quit_after_s) break;
     glfwPollEvents();
     const double now = glfwGetTime();
     const double dt = std::min(now - last, 0.5);
@@ -285,6 +291,11 @@ int App::run_window() {
     if (model_ && buffer_.sample(playhead_, dt * meta_.hello->frame_rate * rate, *sample_)) {
       blend_frames(sample_->a, sample_->b, sample_->t, meta_.hello->skeleton.dof_count(), *frame_);
       draw(*frame_, width, height, dt);
+      ++drawn;
+      skips += sample_->skipped;
+      lag_last = sample_->newest - sample_->playhead;
+      lag_sum += lag_last;
+      lag_max = std::max(lag_max, lag_last);
     } else {
       renderer_->clear(width, height);
       HudInfo info;
@@ -294,6 +305,16 @@ int App::run_window() {
       hud_->draw(info, width, height);
     }
     glfwSwapBuffers(window_);
+    if (options_.simulate_slow_ms > 0)
+      std::this_thread::sleep_for(std::chrono::milliseconds(options_.simulate_slow_ms));
+  }
+  if (options_.quit_after_s > 0) {
+    const double seconds = glfwGetTime() - start;
+    std::printf("matchcast-viewer: drew %ld frames in %.1f s (%.1f fps); playhead skips to a keyframe: %llu; "
+                "frames behind the newest: mean %.1f, max %.1f, at the end %.1f; buffer drops: %llu\n",
+                drawn, seconds, drawn / std::max(seconds, 1e-9), static_cast<unsigned long long>(skips),
+                drawn ? lag_sum / drawn : 0.0, lag_max, lag_last,
+                static_cast<unsigned long long>(buffer_.dropped()));
   }
   return 0;
 }

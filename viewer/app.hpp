@@ -58,7 +58,7 @@ class App {
   std::uint64_t hello_generation_ = 0;
   int selected_ = -1;       // player slot (player_index), -1 = none chosen
   bool labels_ = true;
-  double playhead_ = -1;
+  double playhead_ = kPlayheadUnset;
   std::unique_ptr<Sample> sample_;
   std::unique_ptr<PoseFrame> frame_;
   bool dragging_ = false;

@@ -70,12 +70,15 @@ bool FrameBuffer::sample(double& playhead, double frames, Sample& out) {
   if (frames_.empty()) return false;
   const double oldest = frames_.front().frame.seq;
   const double newest = frames_.back().frame.seq;
-  if (playhead < 0 || seen_timeline_ != timeline_) {
-    // A new timeline: start just behind its newest frame.
+  if (playhead <= kPlayheadUnset || seen_timeline_ != timeline_) {
+    // A new timeline: start just behind its newest frame, even before the
+    // oldest one held (its first frame holds until the playhead gets there),
+    // so that the jitter buffer exists from the start.
     seen_timeline_ = timeline_;
-    playhead = std::max(oldest, newest - config_.delay_frames);
+    playhead = newest - config_.delay_frames;
   } else {
-    playhead += frames;
+    const double behind = newest - playhead - config_.catch_up_after;
+    playhead += behind > 0 ? frames * (1.0 + std::min(1.0, behind / 10.0)) : frames;
   }
   if (newest - playhead > config_.max_lag_frames) {
     // Behind live: jump to the newest keyframe (held frames may not reach it).
@@ -89,9 +92,10 @@ bool FrameBuffer::sample(double& playhead, double frames, Sample& out) {
     out.skipped = true;
     ++skips_;
   }
-  playhead = std::clamp(playhead, oldest, newest);
+  playhead = std::min(playhead, newest);
   // The last frame at or before the playhead, and the one after it.
-  const auto after = std::upper_bound(frames_.begin(), frames_.end(), playhead,
+  const double at = std::max(playhead, oldest);
+  const auto after = std::upper_bound(frames_.begin(), frames_.end(), at,
                                       [](double p, const Entry& e) { return p < e.frame.seq; });
   const auto a = after == frames_.begin() ? after : std::prev(after);
   out.a = a->frame;
@@ -102,9 +106,10 @@ bool FrameBuffer::sample(double& playhead, double frames, Sample& out) {
     out.b = after->frame;
     // Across a gap the older frame holds until the playhead reaches the newer.
     const double span = static_cast<double>(after->frame.seq) - a->frame.seq;
-    out.t = span == 1.0 ? static_cast<float>(playhead - a->frame.seq) : 0.0f;
+    out.t = span == 1.0 ? static_cast<float>(at - a->frame.seq) : 0.0f;
   }
   out.playhead = playhead;
+  out.newest = newest;
   // Frames well behind the playhead are no longer needed.
   while (frames_.size() > 2 && frames_[1].frame.seq + 1 < playhead) frames_.pop_front();
   return true;

@@ -8,7 +8,9 @@
 // display's rate, `delay_frames` behind the newest frame (a small jitter
 // buffer); when it falls more than `max_lag_frames` behind (a slow GPU, a
 // paused window) it jumps to the newest keyframe, so the picture never
-// drifts behind live.
+// drifts behind live. In between, a playhead more than `catch_up_after`
+// frames behind plays faster (up to twice the rate) to close the gap
+// smoothly: a relay that sends faster than real time, a clock drift.
 #pragma once
 
 #include <cstdint>
@@ -27,6 +29,7 @@ struct BufferConfig {
   std::size_t capacity = 400;   // frames kept (20 s at 20 Hz, ~2.5 MB)
   double delay_frames = 2.0;    // jitter buffer: 100 ms behind the newest frame
   double max_lag_frames = 40;   // past this the playhead skips to the newest keyframe
+  double catch_up_after = 6;    // past this (frames behind newest) it plays faster
 };
 
 // What the renderer needs besides poses; copied out under the lock.
@@ -38,11 +41,15 @@ struct StreamMeta {
   int pen_left = 0, pen_right = 0;
 };
 
+// A playhead that has not started: the next sample() places it.
+inline constexpr double kPlayheadUnset = -1e300;
+
 // The two frames around the playhead and the blend factor between them.
 struct Sample {
   PoseFrame a, b;
   float t = 0;             // 0 = a, 1 = b
   double playhead = 0;     // seq units after this call
+  double newest = 0;       // seq of the newest frame held
   bool skipped = false;    // this call jumped to the newest keyframe
 };
 
@@ -66,7 +73,7 @@ class FrameBuffer {
   // --- consumer side (render thread) ---
   StreamMeta meta() const;
   // Advances `playhead` (seq units) by `frames` and fills `out`. False when
-  // there is no frame yet. `playhead` < 0 means "not started".
+  // there is no frame yet. Start with `playhead` = kPlayheadUnset.
   bool sample(double& playhead, double frames, Sample& out);
   // The first frame at or after simulation time `time` still held (for
   // --screenshot --at), or nullopt.

@@ -51,7 +51,9 @@ std::optional<ViewerOptions> parse_options(int argc, char** argv, std::string& m
       ("screenshot", po::value(&o.screenshot), "render one frame offscreen to this PNG and exit")
       ("at", po::value(&o.at), "with --screenshot: the simulation cycle to render (first frame at or after it)")
       ("timeout", po::value(&o.timeout_s), "with --screenshot: longest wait for that frame (s)")
-      ("report", po::value(&o.report), "with --screenshot: also write what was drawn as JSON");
+      ("report", po::value(&o.report), "with --screenshot: also write what was drawn as JSON")
+      ("quit-after", po::value(&o.quit_after_s), "close after this many seconds and print the drawing figures")
+      ("simulate-slow-ms", po::value(&o.simulate_slow_ms), "testing: pretend each frame takes this long to draw");
   po::options_description hidden;
   hidden.add_options()("source", po::value(&o.source));
   po::options_description all;

@@ -29,6 +29,11 @@ struct ViewerOptions {
   double timeout_s = 60;            // screenshot: longest wait for the frame
   std::string report;               // screenshot: JSON sidecar (frame seq/time, camera)
   bool labels = true;
+  // Window mode: close after this many seconds and print what was drawn
+  // (frames, rate, skips, lag behind the newest frame); 0 = run until closed.
+  double quit_after_s = 0;
+  // Testing: sleep this long after every drawn frame, as a very slow GPU would.
+  int simulate_slow_ms = 0;
 };
 
 // Parses argv. nullopt with `message` for --help (exit 0) or an error (exit 1);

@@ -21,15 +21,15 @@ PoseFrame frame(std::uint32_t seq) {
 TEST(FrameBuffer, NothingToSampleBeforeTheFirstFrame) {
   FrameBuffer buffer;
   Sample s;
-  double playhead = -1;
+  double playhead = kPlayheadUnset;
   EXPECT_FALSE(buffer.sample(playhead, 1.0, s));
 }
 
 TEST(FrameBuffer, StartsJustBehindTheNewestFrameAndInterpolates) {
-  FrameBuffer buffer({.capacity = 100, .delay_frames = 2.0, .max_lag_frames = 40});
+  FrameBuffer buffer({.capacity = 100, .delay_frames = 2.0, .max_lag_frames = 40, .catch_up_after = 6});
   for (std::uint32_t i = 0; i < 10; ++i) buffer.push(frame(i), i == 0);
   Sample s;
-  double playhead = -1;
+  double playhead = kPlayheadUnset;
   ASSERT_TRUE(buffer.sample(playhead, 0.0, s));
   EXPECT_DOUBLE_EQ(playhead, 7.0);
   EXPECT_EQ(s.a.seq, 7u);
@@ -47,10 +47,10 @@ TEST(FrameBuffer, StartsJustBehindTheNewestFrameAndInterpolates) {
 }
 
 TEST(FrameBuffer, FallingBehindLiveSkipsToTheNewestKeyframe) {
-  FrameBuffer buffer({.capacity = 400, .delay_frames = 2.0, .max_lag_frames = 40});
+  FrameBuffer buffer({.capacity = 400, .delay_frames = 2.0, .max_lag_frames = 40, .catch_up_after = 6});
   buffer.push(frame(0), true);
   Sample s;
-  double playhead = -1;
+  double playhead = kPlayheadUnset;
   ASSERT_TRUE(buffer.sample(playhead, 0.0, s));
   // A slow renderer: 110 frames arrive while it draws nothing.
   for (std::uint32_t i = 1; i <= 110; ++i) buffer.push(frame(i), i % 20 == 0);
@@ -62,15 +62,46 @@ TEST(FrameBuffer, FallingBehindLiveSkipsToTheNewestKeyframe) {
   // Within the allowed lag nothing jumps.
   ASSERT_TRUE(buffer.sample(playhead, 1.0, s));
   EXPECT_FALSE(s.skipped);
-  EXPECT_DOUBLE_EQ(playhead, 101.0);
+  EXPECT_NEAR(playhead, 101.4, 1e-9);  // 4 frames past catch_up_after: 1.4x
+}
+
+TEST(FrameBuffer, FramesArrivingFasterThanRealTimeAreCaughtUpSmoothly) {
+  FrameBuffer buffer({.capacity = 400, .delay_frames = 2.0, .max_lag_frames = 40, .catch_up_after = 6});
+  std::uint32_t seq = 0;
+  buffer.push(frame(seq), true);
+  Sample s;
+  double playhead = kPlayheadUnset;
+  ASSERT_TRUE(buffer.sample(playhead, 0.0, s));
+  // A relay at 1.5x: three frames arrive for every two the display advances.
+  double max_lag = 0;
+  for (int tick = 0; tick < 400; ++tick) {
+    for (int k = 0; k < (tick % 2 ? 2 : 1); ++k) {
+      ++seq;
+      buffer.push(frame(seq), seq % 20 == 0);
+    }
+    ASSERT_TRUE(buffer.sample(playhead, 1.0, s));
+    max_lag = std::max(max_lag, s.newest - playhead);
+  }
+  EXPECT_EQ(buffer.skips(), 0u);  // no jumps: it played faster instead
+  EXPECT_LT(max_lag, 20.0);
+  // At the rate of the stream there is no speed-up: it stays at the delay.
+  FrameBuffer steady({.capacity = 400, .delay_frames = 2.0, .max_lag_frames = 40, .catch_up_after = 6});
+  steady.push(frame(0), true);
+  playhead = kPlayheadUnset;
+  ASSERT_TRUE(steady.sample(playhead, 0.0, s));
+  for (std::uint32_t i = 1; i < 100; ++i) {
+    steady.push(frame(i), i % 20 == 0);
+    ASSERT_TRUE(steady.sample(playhead, 1.0, s));
+  }
+  EXPECT_NEAR(s.newest - playhead, 2.0, 1e-9);
 }
 
 TEST(FrameBuffer, AGapHoldsTheOlderFrameInsteadOfBlendingAcrossIt) {
-  FrameBuffer buffer({.capacity = 100, .delay_frames = 0.0, .max_lag_frames = 40});
+  FrameBuffer buffer({.capacity = 100, .delay_frames = 0.0, .max_lag_frames = 40, .catch_up_after = 6});
   buffer.push(frame(10), true);
   buffer.push(frame(15), true);
   Sample s;
-  double playhead = -1;
+  double playhead = kPlayheadUnset;
   ASSERT_TRUE(buffer.sample(playhead, 0.0, s));
   playhead = 12.5;
   ASSERT_TRUE(buffer.sample(playhead, 0.0, s));
@@ -83,19 +114,20 @@ TEST(FrameBuffer, ASeqThatDoesNotGrowStartsANewTimeline) {
   FrameBuffer buffer;
   for (std::uint32_t i = 100; i < 110; ++i) buffer.push(frame(i), i == 100);
   Sample s;
-  double playhead = -1;
+  double playhead = kPlayheadUnset;
   ASSERT_TRUE(buffer.sample(playhead, 0.0, s));
   const auto timeline = buffer.timeline();
   buffer.push(frame(5), true);  // a seek back, or a restarted relay
   EXPECT_EQ(buffer.size(), 1u);
   EXPECT_GT(buffer.timeline(), timeline);
   ASSERT_TRUE(buffer.sample(playhead, 1.0, s));
-  EXPECT_DOUBLE_EQ(playhead, 5.0);
+  EXPECT_DOUBLE_EQ(playhead, 3.0);  // the delay behind it; its first frame holds
   EXPECT_EQ(s.a.seq, 5u);
+  EXPECT_FLOAT_EQ(s.t, 0.0f);
 }
 
 TEST(FrameBuffer, AFullBufferDropsItsOldestFramesAndCountsThem) {
-  FrameBuffer buffer({.capacity = 8, .delay_frames = 2.0, .max_lag_frames = 40});
+  FrameBuffer buffer({.capacity = 8, .delay_frames = 2.0, .max_lag_frames = 40, .catch_up_after = 6});
   for (std::uint32_t i = 0; i < 20; ++i) buffer.push(frame(i), true);
   EXPECT_EQ(buffer.size(), 8u);
   EXPECT_EQ(buffer.dropped(), 12u);
@@ -128,14 +160,14 @@ TEST(FrameBuffer, ANewHelloClearsTheFramesAndBumpsTheGeneration) {
 // stretches: the renderer is never more than max_lag frames behind after a
 // sample, and the producer is never blocked by it.
 TEST(FrameBuffer, ASlowRendererNeverFallsBehindAFastProducer) {
-  FrameBuffer buffer({.capacity = 400, .delay_frames = 2.0, .max_lag_frames = 40});
+  FrameBuffer buffer({.capacity = 400, .delay_frames = 2.0, .max_lag_frames = 40, .catch_up_after = 6});
   std::atomic<bool> done{false};
   std::thread producer([&] {
     for (std::uint32_t i = 0; i < 20000; ++i) buffer.push(frame(i), i % 20 == 0);
     done = true;
   });
   Sample s;
-  double playhead = -1;
+  double playhead = kPlayheadUnset;
   int samples = 0;
   while (!done || samples == 0) {
     if (buffer.sample(playhead, 0.1, s)) {

@@ -7,13 +7,6 @@
 // The screenshots are kept in test-output/viewer/ to be looked at.
 #include <gtest/gtest.h>
 
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -34,106 +27,14 @@
 #include "viewer/camera.hpp"
 #include "viewer/player_model.hpp"
 #include "viewer/png.hpp"
-
-extern char** environ;
+#include "tests/viewer/test_processes.hpp"
 
 namespace mc::viewer {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kOut = MATCHCAST_OUTPUT_DIR;
-const std::string kLog = std::string(MATCHCAST_SOURCE_DIR) + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
+using namespace e2e;
 constexpr int kWidth = 960, kHeight = 540;
-
-// A child process: stdout to a pipe (read_fd) or a file, stderr to a file.
-struct Child {
-  pid_t pid = -1;
-  int read_fd = -1;
-};
-
-Child spawn(const std::vector<std::string>& args, const std::string& log, bool pipe_stdout, const std::string& cwd) {
-  Child c;
-  int fds[2] = {-1, -1};
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  if (pipe_stdout) {
-    if (pipe(fds) != 0) return c;
-    posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
-    posix_spawn_file_actions_addclose(&actions, fds[0]);
-  } else {
-    posix_spawn_file_actions_addopen(&actions, 1, (log + ".out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  }
-  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  if (posix_spawn(&c.pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) c.pid = -1;
-  posix_spawn_file_actions_destroy(&actions);
-  if (pipe_stdout) {
-    close(fds[1]);
-    c.read_fd = fds[0];
-  }
-  return c;
-}
-
-// Exit code, or -1 after killing it when it outlives `seconds`.
-int wait_for(pid_t pid, double seconds) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  int status = 0;
-  while (std::chrono::steady_clock::now() < end) {
-    if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  kill(pid, SIGKILL);
-  waitpid(pid, &status, 0);
-  return -1;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// matchcast-server on 127.0.0.1 port 0; stopped with SIGTERM.
-class Server {
- public:
-  explicit Server(const std::string& record_dir) {
-    fs::create_directories(kOut);
-    child_ = spawn({MATCHCAST_SERVER, "--rcg", kLog, "--port", "0", "--threads", "1", "--speed", "2",
-                    "--web", std::string(MATCHCAST_SOURCE_DIR) + "/web", "--record-dir", record_dir},
-                   kOut + "/server.log", true, kOut);
-    if (child_.pid < 0) return;
-    // "Matchcast: open http://127.0.0.1:PORT/"
-    std::string text;
-    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-    while (port_ == 0 && std::chrono::steady_clock::now() < end) {
-      pollfd p{child_.read_fd, POLLIN, 0};
-      if (poll(&p, 1, 100) <= 0) continue;
-      char buf[256];
-      const ssize_t n = read(child_.read_fd, buf, sizeof buf);
-      if (n <= 0) break;
-      text.append(buf, static_cast<std::size_t>(n));
-      const auto at = text.find("127.0.0.1:");
-      if (at != std::string::npos && text.find('/', at) != std::string::npos)
-        port_ = static_cast<std::uint16_t>(std::stoi(text.substr(at + 10)));
-    }
-  }
-  ~Server() { stop(); }
-  std::uint16_t port() const { return port_; }
-  int stop() {
-    if (child_.pid < 0) return 0;
-    kill(child_.pid, SIGTERM);
-    const int code = wait_for(child_.pid, 20);
-    close(child_.read_fd);
-    child_.pid = -1;
-    return code;
-  }
-
- private:
-  Child child_;
-  std::uint16_t port_ = 0;
-};
 
 // A spectator of our own: every frame the relay sends, decoded, by seq.
 class Spectator {
@@ -305,6 +206,8 @@ void expect_players_where_the_frame_puts_them(const Shot& shot, const PoseFrame&
     ++grass_checked;
     if (found_near(shot.image, g, shirt, 1)) ++grass_matched;
   }
+  std::printf("%s: %d of %d field players' shirts where the frame puts them; %d of %d grass points look like a shirt\n",
+              name.c_str(), matched, eligible, grass_matched, grass_checked);
   EXPECT_GE(eligible, 4) << name << ": too few players to check";
   EXPECT_GE(matched, eligible * 3 / 4 + (eligible * 3 % 4 ? 1 : 0)) << name << ": shirts missing at" << missed;
   EXPECT_GE(grass_checked, 2) << name;
