@@ -115,8 +115,10 @@ void EdgeSync::on_snapshot(const std::string* bytes) {
     } else if (!s.keyframe.empty() &&
                (!proto::peek_header(s.keyframe, header, error) || !header.keyframe)) {
       reject("snapshot keyframe: " + (error.empty() ? std::string("not a keyframe") : error));
-    } else if (!have_last_ || e.number > last_) {
-      // Newer than what the spectators have: it replaces it at once.
+    } else if (!have_last_ || e.number > last_ || hello_.empty()) {
+      // Newer than what the spectators have, or the first hello there is:
+      // it replaces what they have at once (live frames resume at the next
+      // keyframe when the numbers do not follow).
       apply_hello(s.hello);
       if (!s.keyframe.empty()) {
         last_frame_seq_ = header.seq;

@@ -120,6 +120,21 @@ TEST_F(EdgeSyncTest, FramesBeforeAnyHelloAreHeldBack) {
   EXPECT_EQ(sync_->stats().held_back, 2u);
 }
 
+TEST_F(EdgeSyncTest, TheFirstHelloComesFromAnOlderSnapshotWhenLiveRanAhead) {
+  // The stream had nothing at the first read; live messages went on
+  // without a hello; the snapshot read again is older than them.
+  sync_->on_snapshot(nullptr);
+  for (std::uint64_t n = 20; n <= 24; ++n) sync_->on_live(live(n, false));
+  sync_->begin_resync();
+  sync_->on_live(live(25, false));
+  const std::string snap = wrap_snapshot(19, hello_, frame(119, true));
+  sync_->on_snapshot(&snap);
+  EXPECT_TRUE(sync_->has_hello());
+  sync_->on_live(live(26, false));  // its base (25) is not with the spectators
+  sync_->on_live(live(27, true));
+  EXPECT_EQ(spectator_->summary(), (Seq{"H", "K119", "K127"}));
+}
+
 TEST_F(EdgeSyncTest, SnapshotThenBufferedLiveMessagesEachOnce) {
   // Joining a running game: live 5..10 arrive while the snapshot is read.
   sync_->begin_resync();
