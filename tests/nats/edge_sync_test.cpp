@@ -58,7 +58,7 @@ struct Collector : relay::Subscriber {
   }
 };
 
-class EdgeSyncTest : public ::testing::Test {
+class NatsEdgeSync : public ::testing::Test {
  protected:
   void SetUp() override {
     channel_ = std::make_shared<relay::Channel>("g");
@@ -79,7 +79,7 @@ class EdgeSyncTest : public ::testing::Test {
 
 using Seq = std::vector<std::string>;
 
-TEST_F(EdgeSyncTest, PassesTheOriginsMessagesInOrderWithTheSameBytes) {
+TEST_F(NatsEdgeSync, PassesTheOriginsMessagesInOrderWithTheSameBytes) {
   sync_->on_snapshot(nullptr);  // nothing stored yet: go live
   sync_->on_live(wrap(Kind::Hello, 1, hello_));
   sync_->on_live(live(2, true));
@@ -97,7 +97,7 @@ TEST_F(EdgeSyncTest, PassesTheOriginsMessagesInOrderWithTheSameBytes) {
   EXPECT_EQ(sync_->stats().applied, 5u);
 }
 
-TEST_F(EdgeSyncTest, AGapHoldsDeltasBackUntilTheNextKeyframe) {
+TEST_F(NatsEdgeSync, AGapHoldsDeltasBackUntilTheNextKeyframe) {
   sync_->on_snapshot(nullptr);
   sync_->on_live(wrap(Kind::Hello, 1, hello_));
   sync_->on_live(live(2, true));
@@ -111,7 +111,7 @@ TEST_F(EdgeSyncTest, AGapHoldsDeltasBackUntilTheNextKeyframe) {
   EXPECT_EQ(sync_->stats().held_back, 2u);
 }
 
-TEST_F(EdgeSyncTest, FramesBeforeAnyHelloAreHeldBack) {
+TEST_F(NatsEdgeSync, FramesBeforeAnyHelloAreHeldBack) {
   sync_->on_snapshot(nullptr);
   sync_->on_live(live(2, true));
   sync_->on_live(live(3, false));
@@ -120,7 +120,7 @@ TEST_F(EdgeSyncTest, FramesBeforeAnyHelloAreHeldBack) {
   EXPECT_EQ(sync_->stats().held_back, 2u);
 }
 
-TEST_F(EdgeSyncTest, TheFirstHelloComesFromAnOlderSnapshotWhenLiveRanAhead) {
+TEST_F(NatsEdgeSync, TheFirstHelloComesFromAnOlderSnapshotWhenLiveRanAhead) {
   // The stream had nothing at the first read; live messages went on
   // without a hello; the snapshot read again is older than them.
   sync_->on_snapshot(nullptr);
@@ -135,7 +135,7 @@ TEST_F(EdgeSyncTest, TheFirstHelloComesFromAnOlderSnapshotWhenLiveRanAhead) {
   EXPECT_EQ(spectator_->summary(), (Seq{"H", "K119", "K127"}));
 }
 
-TEST_F(EdgeSyncTest, SnapshotThenBufferedLiveMessagesEachOnce) {
+TEST_F(NatsEdgeSync, SnapshotThenBufferedLiveMessagesEachOnce) {
   // Joining a running game: live 5..10 arrive while the snapshot is read.
   sync_->begin_resync();
   for (std::uint64_t n = 5; n <= 10; ++n) sync_->on_live(live(n, n == 9));
@@ -151,7 +151,7 @@ TEST_F(EdgeSyncTest, SnapshotThenBufferedLiveMessagesEachOnce) {
   EXPECT_EQ(spectator_->summary().back(), "D111");
 }
 
-TEST_F(EdgeSyncTest, ResyncAfterReconnectSkipsToTheNewerSnapshot) {
+TEST_F(NatsEdgeSync, ResyncAfterReconnectSkipsToTheNewerSnapshot) {
   sync_->on_snapshot(nullptr);
   sync_->on_live(wrap(Kind::Hello, 1, hello_));
   sync_->on_live(live(2, true));
@@ -169,7 +169,7 @@ TEST_F(EdgeSyncTest, ResyncAfterReconnectSkipsToTheNewerSnapshot) {
   EXPECT_EQ(channel_->feed_state(), relay::FeedState::Live);
 }
 
-TEST_F(EdgeSyncTest, AnOlderSnapshotIsIgnoredAndTheLiveGapWaitsForAKeyframe) {
+TEST_F(NatsEdgeSync, AnOlderSnapshotIsIgnoredAndTheLiveGapWaitsForAKeyframe) {
   sync_->on_snapshot(nullptr);
   sync_->on_live(wrap(Kind::Hello, 1, hello_));
   sync_->on_live(live(2, true));
@@ -183,7 +183,7 @@ TEST_F(EdgeSyncTest, AnOlderSnapshotIsIgnoredAndTheLiveGapWaitsForAKeyframe) {
   EXPECT_EQ(sync_->stats().resyncs, 0u);
 }
 
-TEST_F(EdgeSyncTest, HostileInputIsCountedAndSkipped) {
+TEST_F(NatsEdgeSync, HostileInputIsCountedAndSkipped) {
   sync_->on_snapshot(nullptr);
   sync_->on_live(wrap(Kind::Hello, 1, hello_));
   sync_->on_live(live(2, true));
@@ -210,7 +210,7 @@ TEST_F(EdgeSyncTest, HostileInputIsCountedAndSkipped) {
   EXPECT_EQ(spectator_->summary(), (Seq{"H", "K102", "K110", "D111"}));
 }
 
-TEST_F(EdgeSyncTest, AnOriginSilentTooLongIsAFeedLostThenBack) {
+TEST_F(NatsEdgeSync, AnOriginSilentTooLongIsAFeedLostThenBack) {
   sync_->on_snapshot(nullptr);
   sync_->on_live(wrap(Kind::Hello, 1, hello_));
   sync_->on_live(live(2, true));
@@ -228,7 +228,7 @@ TEST_F(EdgeSyncTest, AnOriginSilentTooLongIsAFeedLostThenBack) {
   EXPECT_NE(spectator_->got[2].bytes->find("\"seq\":102"), std::string::npos);
 }
 
-TEST_F(EdgeSyncTest, ANewHelloReplacesTheOldAndWaitsForItsKeyframe) {
+TEST_F(NatsEdgeSync, ANewHelloReplacesTheOldAndWaitsForItsKeyframe) {
   sync_->on_snapshot(nullptr);
   sync_->on_live(wrap(Kind::Hello, 1, hello_));
   sync_->on_live(live(2, true));

@@ -155,7 +155,7 @@ std::string describe(Spectator& s) {
   return out;
 }
 
-class NatsOriginEdgeTest : public ::testing::Test {
+class NatsOriginEdge : public ::testing::Test {
  protected:
   void SetUp() override {
     nats_bin_ = find_nats_server();
@@ -231,7 +231,7 @@ class NatsOriginEdgeTest : public ::testing::Test {
   ChildProcess nats_, origin_, edge_a_, edge_b_;
 };
 
-TEST_F(NatsOriginEdgeTest, BothEdgesDeliverTheOriginsFramesByteForByte) {
+TEST_F(NatsOriginEdge, BothEdgesDeliverTheOriginsFramesByteForByte) {
   auto at_origin = watch(origin_port_);
   auto at_a = watch(edge_a_port_);
   auto at_b = watch(edge_b_port_);
@@ -263,7 +263,7 @@ TEST_F(NatsOriginEdgeTest, BothEdgesDeliverTheOriginsFramesByteForByte) {
   EXPECT_EQ(at_a->bad() + at_b->bad(), 0);
 }
 
-TEST_F(NatsOriginEdgeTest, KillingOneEdgeCostsTheOtherEdgesSpectatorsNothing) {
+TEST_F(NatsOriginEdge, KillingOneEdgeCostsTheOtherEdgesSpectatorsNothing) {
   auto at_a = watch(edge_a_port_);
   auto at_b = watch(edge_b_port_);
   std::this_thread::sleep_for(1s);
@@ -281,7 +281,7 @@ TEST_F(NatsOriginEdgeTest, KillingOneEdgeCostsTheOtherEdgesSpectatorsNothing) {
   for (const auto& t : at_b->texts()) EXPECT_EQ(t.data.find("\"type\":\"feed\""), std::string::npos) << t.data;
 }
 
-TEST_F(NatsOriginEdgeTest, EdgesReconnectAfterANatsRestartAndResyncAtAKeyframe) {
+TEST_F(NatsOriginEdge, EdgesReconnectAfterANatsRestartAndResyncAtAKeyframe) {
   auto at_a = watch(edge_a_port_);
   auto at_b = watch(edge_b_port_);
   std::this_thread::sleep_for(1s);
@@ -321,7 +321,7 @@ TEST_F(NatsOriginEdgeTest, EdgesReconnectAfterANatsRestartAndResyncAtAKeyframe) 
   EXPECT_GE(same, 40u);
 }
 
-TEST_F(NatsOriginEdgeTest, GarbageOnTheGamesSubjectIsSkipped) {
+TEST_F(NatsOriginEdge, GarbageOnTheGamesSubjectIsSkipped) {
   auto at_b = watch(edge_b_port_);
   mc::nats::NatsConfig cfg;
   cfg.url = "nats://127.0.0.1:" + std::to_string(nats_port_);
