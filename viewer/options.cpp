@@ -46,6 +46,7 @@ std::optional<ViewerOptions> parse_options(int argc, char** argv, std::string& m
       ("speed", po::value(&o.speed), "recording playback speed")
       ("loop", po::bool_switch(&o.loop), "recording: start again at the end")
       ("fullscreen", po::bool_switch(&o.fullscreen), "full screen on the primary monitor")
+      ("samples", po::value(&o.samples), "window: anti-aliasing samples per pixel (default 4, or 0 on a software renderer such as llvmpipe)")
       ("no-vsync", "render as fast as possible instead of at the display's rate")
       ("no-labels", "no numbers above the players")
       ("screenshot", po::value(&o.screenshot), "render one frame offscreen to this PNG and exit")

@@ -22,6 +22,7 @@ struct ViewerOptions {
   bool loop = false;                // recordings: start again at the end
   bool fullscreen = false;
   bool vsync = true;
+  int samples = -1;                 // window: multisample anti-aliasing; -1 = 4, or off on a software renderer
   // --screenshot FILE --at SIMTIME: render the frame at that simulation
   // cycle offscreen, write a PNG, exit (0 ok, 2 no frame in time).
   std::string screenshot;

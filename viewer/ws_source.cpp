@@ -151,7 +151,8 @@ struct WsSource::Session {
     if (type == "replay") {
       const auto j = nlohmann::json::parse(text, nullptr, false);
       if (j.is_object() && j.contains("speed") && j["speed"].is_number())
-        owner.speed_ = j["speed"].get<double>();
+        owner.speed_ = std::clamp(j["speed"].get<double>(), 0.25, 8.0);
+      if (j.is_object() && j.contains("paused") && j["paused"].is_boolean()) owner.paused_ = j["paused"].get<bool>();
       return;
     }
     apply_control_message(text, owner.buffer_);

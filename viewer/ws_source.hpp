@@ -37,6 +37,7 @@ class WsSource : public Source {
   void seek_by(double seconds) override;
   void set_speed(double speed) override;
   double speed() const override { return speed_.load(); }
+  bool paused() const override { return paused_.load(); }
   int attempts() const override { return attempts_.load(); }
   std::string describe() const override;
 
@@ -55,6 +56,7 @@ class WsSource : public Source {
   std::atomic<int> attempts_{0};
   std::atomic<std::uint64_t> frames_{0}, corrupt_{0};
   std::atomic<double> speed_{1.0};
+  std::atomic<bool> paused_{false};  // a replay's state, from its status messages
   std::atomic<int> last_time_{0};
 };
 

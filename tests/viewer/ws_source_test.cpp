@@ -128,5 +128,36 @@ TEST(WsSource, DecodesTheStreamSkipsACorruptFrameAndSurvivesTheDrop) {
   source.stop();
 }
 
+TEST(WsSource, SteersTheRelaysReplayOfARecording) {
+  std::ifstream in(std::string(MATCHCAST_SOURCE_DIR) + "/tests/proto/golden/frames_v1.json");
+  auto hello = nlohmann::json::parse(in)["hello"];
+  hello["type"] = "hello";
+  asio::io_context ioc;
+  tcp::acceptor acceptor(ioc, {asio::ip::make_address("127.0.0.1"), 0});
+  std::string received;
+  std::thread server([&] {
+    websocket::stream<tcp::socket> ws(acceptor.accept());
+    ws.accept();
+    ws.text(true);
+    ws.write(asio::buffer(hello.dump()));
+    ws.write(asio::buffer(std::string(R"({"type":"replay","time":120,"paused":true,"speed":2})")));
+    boost::beast::flat_buffer buffer;
+    ws.read(buffer);  // the viewer's command
+    received = boost::beast::buffers_to_string(buffer.data());
+    ws.close(websocket::close_code::normal);
+  });
+  WsUrl url = local(acceptor.local_endpoint().port());
+  url.target = "/ws?recording=game1";
+  FrameBuffer buffer;
+  WsSource source(url, buffer, RetryPolicy{0.05, 0.1});
+  source.start();
+  ASSERT_TRUE(eventually([&] { return source.paused(); }));
+  EXPECT_DOUBLE_EQ(source.speed(), 2.0);
+  source.toggle_pause();
+  server.join();
+  EXPECT_EQ(received, R"({"type":"replay","action":"toggle"})");
+  source.stop();
+}
+
 }  // namespace
 }  // namespace mc::viewer
