@@ -45,3 +45,17 @@ TEST(CmuAssets, GraphAndMapFromTheRealClips) {
   EXPECT_EQ(b.map.cost, a.map.cost);
   EXPECT_EQ(b.map_params.start_node, a.map_params.start_node);
 }
+
+TEST(CmuAssets, ReachModelForTheServer) {
+  std::string error;
+  const auto model = io::load_reach_model(std::string(MATCHCAST_SHARED_DIR) + "/data/mocap", MATCHCAST_MOCAP_CACHE, error);
+  ASSERT_TRUE(model) << error;
+  EXPECT_GT(model->reference_speed, 0.8f);
+  EXPECT_LT(model->reference_speed, 2.5f);
+  ReachPlayer p;
+  p.glide = 0;
+  // Turning round costs: 8 m behind takes longer than 8 m ahead.
+  EXPECT_GT(reach_time(*model, p, -8, 0), reach_time(*model, p, 8, 0) + 0.5f);
+  EXPECT_FALSE(io::load_reach_model("/nonexistent", "", error));
+  EXPECT_FALSE(error.empty());
+}

@@ -99,4 +99,15 @@ bool load_or_build_assets(const AssetOptions& o, MocapAssets& a, std::string& er
   return true;
 }
 
+std::shared_ptr<const ReachModel> load_reach_model(const std::string& mocap_dir, const std::string& cache_dir,
+                                                   std::string& error) {
+  AssetOptions o;
+  o.clips.dir = mocap_dir;
+  o.map.start_node = -1;
+  o.cache_dir = cache_dir;
+  MocapAssets a;
+  if (!load_or_build_assets(o, a, error)) return nullptr;
+  return std::make_shared<const ReachModel>(make_reach_model(std::move(a.map), a.graph.hz));
+}
+
 }  // namespace mc::anim::mocap::io

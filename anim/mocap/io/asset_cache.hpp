@@ -4,11 +4,13 @@
 // rebuilding it (the graph takes seconds, the map a few more).
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "anim/mocap/capability_map.hpp"
 #include "anim/mocap/io/clip_files.hpp"
 #include "anim/mocap/motion_graph.hpp"
+#include "anim/mocap/reach_overlay.hpp"
 
 namespace mc::anim::mocap::io {
 
@@ -30,6 +32,11 @@ struct MocapAssets {
 };
 
 bool load_or_build_assets(const AssetOptions& options, MocapAssets& assets, std::string& error);
+
+// The reach overlay's model for the server: the clips of `mocap_dir`, cached
+// in `cache_dir` ("" = none). Null with `error` set when the clips cannot be read.
+std::shared_ptr<const ReachModel> load_reach_model(const std::string& mocap_dir, const std::string& cache_dir,
+                                                   std::string& error);
 
 // The node of `clip_name` with a ground speed nearest `speed` (m/s), away from
 // the clip's ends; -1 when the clip has no node left after pruning.
