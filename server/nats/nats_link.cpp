@@ -47,7 +47,22 @@ std::unique_ptr<NatsLink> NatsLink::open(const NatsConfig& config, const std::st
   std::unique_ptr<NatsLink> link(new NatsLink(std::move(events)));
   natsOptions* opts = nullptr;
   natsStatus s = natsOptions_Create(&opts);
-  if (s == NATS_OK) s = natsOptions_SetURL(opts, config.url.c_str());
+  // One URL per server: libnats 3.4 mis-reads credentials in a
+  // comma-separated URL list, an array of URLs it reads right.
+  std::vector<std::string> urls;
+  for (std::size_t pos = 0; pos <= config.url.size();) {
+    auto comma = config.url.find(',', pos);
+    if (comma == std::string::npos) comma = config.url.size();
+    std::string one = config.url.substr(pos, comma - pos);
+    one.erase(0, one.find_first_not_of(' '));
+    one.erase(one.find_last_not_of(' ') + 1);
+    if (!one.empty()) urls.push_back(one);
+    pos = comma + 1;
+  }
+  std::vector<const char*> url_ptrs;
+  for (const auto& u : urls) url_ptrs.push_back(u.c_str());
+  if (urls.empty()) s = NATS_INVALID_ARG;
+  if (s == NATS_OK) s = natsOptions_SetServers(opts, url_ptrs.data(), static_cast<int>(url_ptrs.size()));
   if (s == NATS_OK) s = natsOptions_SetName(opts, name.c_str());
   // Forever, at a steady pace: a NATS node that comes back is found again.
   if (s == NATS_OK) s = natsOptions_SetMaxReconnect(opts, -1);
