@@ -1,34 +1,49 @@
 #include "server/relay/channel.hpp"
 
 #include <algorithm>
+#include <boost/asio/post.hpp>
 
 namespace mc::relay {
 
+// The catch-up and the audience change together under the lock: a joiner
+// gets a message either in its catch-up or from the broadcast, never both.
 void Channel::set_hello(std::string json) {
   Message m = Message::control(std::move(json));
+  Audience a;
   {
     std::lock_guard lock(mutex_);
     hello_ = m;
     // Frames coded against the old hello's skeleton are meaningless under the
     // new one: joiners wait for the next keyframe.
     gop_.clear();
+    a = audience_locked();
   }
-  broadcast(m);
+  send(a, m);
 }
 
 void Channel::publish_frame(std::string bytes, bool keyframe) {
   Message m = Message::frame(std::move(bytes), keyframe);
+  Audience a;
   {
     std::lock_guard lock(mutex_);
     if (keyframe) gop_.clear();
     // Deltas with no keyframe before them cannot be decoded by a joiner.
     if (keyframe || !gop_.empty()) gop_.push_back(m);
+    a = audience_locked();
   }
   ++frames_published_;
-  broadcast(m);
+  send(a, m);
 }
 
-void Channel::publish_control(std::string json) { broadcast(Message::control(std::move(json))); }
+void Channel::publish_control(std::string json) {
+  Message m = Message::control(std::move(json));
+  Audience a;
+  {
+    std::lock_guard lock(mutex_);
+    a = audience_locked();
+  }
+  send(a, m);
+}
 
 std::vector<Message> Channel::join(const std::shared_ptr<Subscriber>& s) {
   std::lock_guard lock(mutex_);
@@ -36,7 +51,15 @@ std::vector<Message> Channel::join(const std::shared_ptr<Subscriber>& s) {
   first.reserve(gop_.size() + 1);
   if (hello_.bytes) first.push_back(hello_);
   first.insert(first.end(), gop_.begin(), gop_.end());
-  subscribers_.push_back(s);
+  if (auto* home = s->home()) {
+    auto it = std::find_if(groups_.begin(), groups_.end(), [home](const Group& g) { return g.home == home; });
+    if (it == groups_.end()) it = groups_.insert(groups_.end(), Group{home, std::make_shared<SubscriberList>()});
+    auto list = std::make_shared<SubscriberList>(*it->list);
+    list->push_back(s);
+    it->list = std::move(list);
+  } else {
+    subscribers_.push_back(s);
+  }
   return first;
 }
 
@@ -46,11 +69,21 @@ void Channel::leave(const Subscriber* s) {
     auto p = w.lock();
     return !p || p.get() == s;
   });
+  for (auto& g : groups_) {
+    auto it = std::find_if(g.list->begin(), g.list->end(), [s](const auto& p) { return p.get() == s; });
+    if (it == g.list->end()) continue;
+    auto list = std::make_shared<SubscriberList>(*g.list);
+    list->erase(list->begin() + (it - g.list->begin()));
+    g.list = std::move(list);
+    break;
+  }
 }
 
 std::size_t Channel::subscribers() const {
   std::lock_guard lock(mutex_);
-  return subscribers_.size();
+  std::size_t n = subscribers_.size();
+  for (const auto& g : groups_) n += g.list->size();
+  return n;
 }
 
 const char* feed_state_name(FeedState s) {
@@ -69,21 +102,29 @@ void Channel::shutdown_subscribers() {
     std::lock_guard lock(mutex_);
     for (auto& w : subscribers_)
       if (auto p = w.lock()) targets.push_back(std::move(p));
+    for (const auto& g : groups_) targets.insert(targets.end(), g.list->begin(), g.list->end());
   }
   for (auto& t : targets) t->shutdown();
 }
 
-void Channel::broadcast(const Message& m) {
-  // Copy the live subscribers under the lock, deliver outside it, so a slow
-  // deliver never blocks joins or the next publish's bookkeeping.
-  std::vector<std::shared_ptr<Subscriber>> targets;
-  {
-    std::lock_guard lock(mutex_);
-    targets.reserve(subscribers_.size());
-    for (auto& w : subscribers_)
-      if (auto p = w.lock()) targets.push_back(std::move(p));
+Channel::Audience Channel::audience_locked() {
+  Audience a;
+  a.targets.reserve(subscribers_.size());
+  for (auto& w : subscribers_)
+    if (auto p = w.lock()) a.targets.push_back(std::move(p));
+  a.groups = groups_;
+  return a;
+}
+
+void Channel::send(Audience& a, const Message& m) {
+  // Home threads get one task per message for all their subscribers.
+  for (auto& g : a.groups) {
+    if (g.list->empty()) continue;
+    boost::asio::post(*g.home, [list = std::move(g.list), m] {
+      for (const auto& s : *list) s->deliver_here(m);
+    });
   }
-  for (auto& t : targets) t->deliver(m);
+  for (auto& t : a.targets) t->deliver(m);
 }
 
 }  // namespace mc::relay

@@ -7,6 +7,7 @@
 // expected from one producer thread, so subscribers see frames in order.
 #pragma once
 
+#include <boost/asio/io_context.hpp>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -26,6 +27,14 @@ class Subscriber {
   virtual void deliver(const Message& m) = 0;
   // The server is stopping: say goodbye (a close frame) and end.
   virtual void shutdown() {}
+
+  // A subscriber that lives on one single-threaded io_context (a spectator's
+  // session) returns it. The channel then delivers to all the subscribers
+  // of that thread with one posted task per message, which calls
+  // deliver_here() on that thread: no post, lock or allocation per
+  // subscriber and frame. nullptr = deliver() from the publisher's thread.
+  virtual boost::asio::io_context* home() { return nullptr; }
+  virtual void deliver_here(const Message& m) { deliver(m); }
 };
 
 // Where a channel's input stands, for spectators' banners and /metrics.
@@ -61,13 +70,30 @@ class Channel {
   std::uint64_t frames_published() const { return frames_published_.load(); }
 
  private:
-  void broadcast(const Message& m);
+  struct Group;
+  // Who receives a message: copied under the lock, served outside it, so a
+  // slow subscriber never blocks joins or the next publish.
+  struct Audience;
+  Audience audience_locked();
+  static void send(Audience& a, const Message& m);
 
   const std::string name_;
   mutable std::mutex mutex_;
   Message hello_;  // bytes == nullptr until set_hello
   std::vector<Message> gop_;  // latest keyframe + deltas since
-  std::vector<std::weak_ptr<Subscriber>> subscribers_;
+  std::vector<std::weak_ptr<Subscriber>> subscribers_;  // those without a home()
+  // Subscribers by home thread. Each list is copied on join and leave (rare)
+  // and shared, immutable, with the tasks in flight (per frame: one pointer).
+  using SubscriberList = std::vector<std::shared_ptr<Subscriber>>;
+  struct Group {
+    boost::asio::io_context* home;
+    std::shared_ptr<const SubscriberList> list;
+  };
+  struct Audience {
+    std::vector<std::shared_ptr<Subscriber>> targets;
+    std::vector<Group> groups;
+  };
+  std::vector<Group> groups_;
   std::atomic<std::uint64_t> frames_published_{0};
   std::atomic<int> feed_state_{0};
 };

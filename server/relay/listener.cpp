@@ -10,8 +10,8 @@ namespace beast = boost::beast;
 
 namespace mc::relay {
 
-Listener::Listener(net::io_context& ioc, const HttpContext& context)
-    : ioc_(ioc), acceptor_(net::make_strand(ioc)), context_(context) {}
+Listener::Listener(std::vector<net::io_context*> threads, const HttpContext& context)
+    : threads_(std::move(threads)), acceptor_(*threads_.front()), context_(context) {}
 
 bool Listener::open(const net::ip::tcp::endpoint& endpoint, std::string& error) {
   beast::error_code ec;
@@ -43,7 +43,8 @@ void Listener::close() {
 }
 
 void Listener::do_accept() {
-  acceptor_.async_accept(net::make_strand(ioc_),
+  net::io_context& home = *threads_[next_++ % threads_.size()];
+  acceptor_.async_accept(home,
                          beast::bind_front_handler(&Listener::on_accept, shared_from_this()));
 }
 

@@ -1,10 +1,13 @@
-// Accepts TCP connections and gives each to an HttpSession on its own strand.
+// Accepts TCP connections and gives each to an HttpSession on one of the
+// relay's I/O threads (one io_context per thread, chosen in turn): a session
+// then runs on a single thread and needs no strand.
 #pragma once
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/core/error.hpp>
 #include <memory>
+#include <vector>
 
 #include "server/relay/http_session.hpp"
 
@@ -12,7 +15,8 @@ namespace mc::relay {
 
 class Listener : public std::enable_shared_from_this<Listener> {
  public:
-  Listener(boost::asio::io_context& ioc, const HttpContext& context);
+  // `threads`: one io_context per I/O thread; the acceptor runs on the first.
+  Listener(std::vector<boost::asio::io_context*> threads, const HttpContext& context);
   // Binds and listens; false with `error` when the endpoint is unusable.
   bool open(const boost::asio::ip::tcp::endpoint& endpoint, std::string& error);
   void run();
@@ -23,7 +27,8 @@ class Listener : public std::enable_shared_from_this<Listener> {
   void do_accept();
   void on_accept(boost::beast::error_code ec, boost::asio::ip::tcp::socket socket);
 
-  boost::asio::io_context& ioc_;
+  std::vector<boost::asio::io_context*> threads_;
+  std::size_t next_ = 0;
   boost::asio::ip::tcp::acceptor acceptor_;
   const HttpContext& context_;
 };

@@ -19,9 +19,7 @@ RelayServer::RelayServer(RelayConfig config, std::shared_ptr<ChannelRegistry> ch
       channels_(std::move(channels)),
       context_{config_, stats_, files_, *channels_,
                std::make_shared<ConnectionLimiter>(config_.max_connections_per_ip), control, replays,
-               &sessions_},
-      ioc_(config_.threads ? static_cast<int>(config_.threads)
-                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {}
+               &sessions_} {}
 
 RelayServer::~RelayServer() { stop(); }
 
@@ -35,11 +33,17 @@ bool RelayServer::start(std::string& error) {
     error = "bad listen address '" + config_.address + "': " + ec.message();
     return false;
   }
-  listener_ = std::make_shared<Listener>(ioc_, context_);
+  const unsigned n = config_.threads ? config_.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<net::io_context*> iocs;
+  for (unsigned i = 0; i < n; ++i) {
+    iocs_.push_back(std::make_unique<net::io_context>(1));
+    guards_.push_back(net::make_work_guard(*iocs_.back()));
+    iocs.push_back(iocs_.back().get());
+  }
+  listener_ = std::make_shared<Listener>(iocs, context_);
   if (!listener_->open({address, config_.port}, error)) return false;
   listener_->run();
-  const unsigned n = config_.threads ? config_.threads : std::max(1u, std::thread::hardware_concurrency());
-  for (unsigned i = 0; i < n; ++i) threads_.emplace_back([this] { ioc_.run(); });
+  for (auto& ioc : iocs_) threads_.emplace_back([&ioc = *ioc] { ioc.run(); });
   return true;
 }
 
@@ -94,7 +98,8 @@ void RelayServer::stop(std::chrono::milliseconds grace) {
   const auto deadline = std::chrono::steady_clock::now() + grace;
   while (stats_.clients.load() > 0 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  ioc_.stop();
+  guards_.clear();
+  for (auto& ioc : iocs_) ioc->stop();
   for (auto& t : threads_) t.join();
   threads_.clear();
 }

@@ -56,7 +56,9 @@ class RelayServer {
   SessionSet sessions_;
   std::optional<boost::asio::ssl::context> tls_;
   HttpContext context_;
-  boost::asio::io_context ioc_;
+  // One io_context per I/O thread (see listener.hpp), kept running by a guard.
+  std::vector<std::unique_ptr<boost::asio::io_context>> iocs_;
+  std::vector<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> guards_;
   std::shared_ptr<Listener> listener_;
   std::vector<std::thread> threads_;
 };

@@ -20,10 +20,16 @@ constexpr int kMaxInboundPerSecond = 20;
 // from a channel the session has left carry an old epoch and are ignored.
 class WebSocketSession::Tap : public Subscriber {
  public:
-  Tap(std::weak_ptr<WebSocketSession> session, std::uint64_t epoch)
-      : session_(std::move(session)), epoch_(epoch) {}
+  Tap(std::weak_ptr<WebSocketSession> session, std::uint64_t epoch, net::io_context* home)
+      : session_(std::move(session)), epoch_(epoch), home_(home) {}
   void deliver(const Message& m) override {
     if (auto s = session_.lock()) s->deliver(epoch_, m);
+  }
+  net::io_context* home() override { return home_; }
+  // On the session's own thread: straight into its queue.
+  void deliver_here(const Message& m) override {
+    if (auto s = session_.lock())
+      if (s->epoch_ == epoch_) s->enqueue(m);
   }
   void shutdown() override {
     if (auto s = session_.lock()) s->shutdown();
@@ -32,6 +38,7 @@ class WebSocketSession::Tap : public Subscriber {
  private:
   std::weak_ptr<WebSocketSession> session_;
   std::uint64_t epoch_;
+  net::io_context* home_;
 };
 
 WebSocketSession::WebSocketSession(Transport&& transport, std::shared_ptr<Channel> channel,
@@ -111,7 +118,11 @@ void WebSocketSession::on_accept(beast::error_code ec) {
 
 void WebSocketSession::switch_to(std::shared_ptr<Channel> channel, std::optional<Message> announce) {
   if (current_ && tap_) current_->leave(tap_.get());
-  tap_ = std::make_shared<Tap>(weak_from_this(), ++epoch_);
+  // A session on a thread of its own (the relay's io_context per thread)
+  // is served by its channel's per-thread task; otherwise by posts.
+  auto executor = ws_.get_executor();
+  auto* on_thread = executor.target<net::io_context::executor_type>();
+  tap_ = std::make_shared<Tap>(weak_from_this(), ++epoch_, on_thread ? &on_thread->context() : nullptr);
   current_ = std::move(channel);
   std::vector<Message> dropped;
   queue_.take_all(dropped);  // the old source's backlog is of no use now
