@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "anim/mocap/graph_steer_job.hpp"
 #include "anim/mocap/reach_overlay.hpp"
 
 using namespace mc::anim::mocap;
@@ -58,4 +59,33 @@ TEST(CmuAssets, ReachModelForTheServer) {
   EXPECT_GT(reach_time(*model, p, -8, 0), reach_time(*model, p, 8, 0) + 0.5f);
   EXPECT_FALSE(io::load_reach_model("/nonexistent", "", error));
   EXPECT_FALSE(error.empty());
+}
+
+TEST(CmuAssets, SteeringTheRealGraphTurnsBothWays) {
+  io::AssetOptions o;
+  o.clips.dir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap";
+  o.map.start_node = -1;
+  o.cache_dir = MATCHCAST_MOCAP_CACHE;
+  io::MocapAssets a;
+  std::string error;
+  ASSERT_TRUE(io::load_or_build_assets(o, a, error)) << error;
+  for (const float want : {-0.6f, 0.6f}) {
+    int node = a.map_params.start_node;
+    double turned = 0;
+    const int frames = 300;
+    for (int k = 0; k < frames; ++k) {
+      int next = -1;
+      GraphSteerJob job;
+      job.graph = &a.graph;
+      job.node = node;
+      job.want_speed = 1.0f;
+      job.want_turn = want;
+      job.next = &next;
+      ASSERT_TRUE(job.Run());
+      node = next;
+      turned += a.graph.nodes[static_cast<std::size_t>(node)].dyaw;
+    }
+    const double rate = turned / (frames / 30.0);
+    EXPECT_GT(rate * want, 0.1) << "wanted " << want << " rad/s, got " << rate;
+  }
 }
