@@ -1,5 +1,7 @@
 #include "server/app/server_options.hpp"
 
+#include "anim/mocap/io/asset_cache.hpp"
+
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <fstream>
@@ -24,6 +26,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   unsigned max_queue_kb = 0, stall_ms = 0;
   std::string role = "standalone", edge_games, record_at = "origin";
   unsigned nats_reconnect_ms = 0, origin_silence_ms = 0;
+  std::string reach_channels, mocap_dir = source_dir + "/../shared/data/mocap", mocap_cache = "mocap-cache";
   po::options_description desc(
       "matchcast-server: broadcast a RoboCup 2D game as a live 3D stream\n\nOptions");
   // clang-format off
@@ -38,6 +41,12 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     ("speed", po::value(&feed.speed)->default_value(1.0), "playback speed, 1 = real time")
     ("keyframe-interval", po::value(&feed.keyframe_interval)->default_value(20),
         "frames between keyframes (20 = 1 s)")
+    ("reach-overlay", po::value(&reach_channels),
+        "channels that also send the reach map (who gets where first, from motion capture), "
+        "2.5 times a second: comma-separated names or 'all' (default: none)")
+    ("mocap-dir", po::value(&mocap_dir)->default_value(mocap_dir), "the CMU clips the reach map is built from")
+    ("mocap-cache", po::value(&mocap_cache)->default_value(mocap_cache),
+        "folder where the built motion graph and map are cached (empty = rebuild at each start)")
     ("address", po::value(&o.relay.address)->default_value("127.0.0.1"), "address to listen on")
     ("port", po::value(&o.relay.port)->default_value(8080), "TCP port, 0 = any free port")
     ("web", po::value(&o.relay.web_root)->default_value(source_dir + "/web"),
@@ -173,6 +182,27 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
         return std::nullopt;
       }
     o.feeds.push_back(cf);
+  }
+  if (!reach_channels.empty()) {
+    std::string error;
+    const auto model = anim::mocap::io::load_reach_model(mocap_dir, mocap_cache, error);
+    if (!model) {
+      message = "matchcast-server: --reach-overlay: " + error;
+      exit_code = 2;
+      return std::nullopt;
+    }
+    const std::string list = "," + reach_channels + ",";
+    bool any = false;
+    for (auto& cf : o.feeds)
+      if (reach_channels == "all" || list.find("," + cf.channel + ",") != std::string::npos) {
+        cf.feed.reach_model = model;
+        any = true;
+      }
+    if (!any) {
+      message = "matchcast-server: --reach-overlay names no channel of this server: '" + reach_channels + "'";
+      exit_code = 2;
+      return std::nullopt;
+    }
   }
   for (std::size_t pos = 0; pos < origins.size();) {
     auto comma = origins.find(',', pos);
