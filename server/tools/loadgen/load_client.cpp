@@ -2,8 +2,10 @@
 
 #include <boost/beast/core/bind_handler.hpp>
 
+#include "server/tools/loadgen/ws_frame_parser.hpp"
+
 namespace beast = boost::beast;
-namespace websocket = beast::websocket;
+namespace http = beast::http;
 namespace net = boost::asio;
 
 namespace mc::loadgen {
@@ -29,13 +31,13 @@ void ClientStats::merge(const ClientStats& o) {
 }
 
 LoadClient::LoadClient(net::io_context& ioc, ClientOptions options, ClientStats& stats)
-    : options_(std::move(options)), stats_(stats), ws_(ioc), pause_(ioc) {
+    : options_(std::move(options)), stats_(stats), stream_(ioc), pause_(ioc) {
   if (options_.decode && options_.skeleton)
     decoder_ = std::make_unique<proto::FrameDecoder>(*options_.skeleton);
 }
 
 void LoadClient::start() {
-  auto& socket = beast::get_lowest_layer(ws_).socket();
+  auto& socket = stream_.socket();
   beast::error_code ec;
   socket.open(options_.server.protocol(), ec);
   if (!ec) socket.bind({options_.source, 0}, ec);
@@ -43,15 +45,16 @@ void LoadClient::start() {
     note_failure("bind", ec);
     return;
   }
-  beast::get_lowest_layer(ws_).expires_after(std::chrono::seconds(30));
-  beast::get_lowest_layer(ws_).async_connect(
-      options_.server, beast::bind_front_handler(&LoadClient::on_connect, shared_from_this()));
+  stream_.expires_after(std::chrono::seconds(30));
+  stream_.async_connect(options_.server,
+                        beast::bind_front_handler(&LoadClient::on_connect, shared_from_this()));
 }
 
 void LoadClient::stop() {
   beast::error_code ec;
   pause_.cancel();
-  beast::get_lowest_layer(ws_).socket().close(ec);
+  open_ = false;
+  stream_.socket().close(ec);
 }
 
 void LoadClient::note_failure(const char* step, beast::error_code ec) {
@@ -60,30 +63,44 @@ void LoadClient::note_failure(const char* step, beast::error_code ec) {
 }
 
 void LoadClient::on_connect(beast::error_code ec) {
-  if (ec) {
-    note_failure("connect", ec);
-    return;
-  }
-  ws_.async_handshake(options_.host, options_.target,
-                      beast::bind_front_handler(&LoadClient::on_handshake, shared_from_this()));
+  if (ec) return note_failure("connect", ec);
+  // The upgrade request (RFC 6455 section 4.1); any key will do for a test client.
+  request_ = std::make_unique<http::request<http::empty_body>>(http::verb::get, options_.target, 11);
+  request_->set(http::field::host, options_.host);
+  request_->set(http::field::upgrade, "websocket");
+  request_->set(http::field::connection, "Upgrade");
+  request_->set(http::field::sec_websocket_key, "dGhlIHNhbXBsZSBub25jZQ==");
+  request_->set(http::field::sec_websocket_version, "13");
+  http::async_write(stream_, *request_,
+                    beast::bind_front_handler(&LoadClient::on_request_sent, shared_from_this()));
 }
 
-void LoadClient::on_handshake(beast::error_code ec) {
-  if (ec) {
-    note_failure("handshake", ec);
-    return;
-  }
-  beast::get_lowest_layer(ws_).expires_never();
-  ws_.read_message_max(16 * 1024 * 1024);
+void LoadClient::on_request_sent(beast::error_code ec, std::size_t) {
+  request_.reset();
+  if (ec) return note_failure("handshake", ec);
+  response_ = std::make_unique<http::response<http::string_body>>();
+  // Bytes after the response (the hello, the first frames) stay in buffer_.
+  http::async_read(stream_, buffer_, *response_,
+                   beast::bind_front_handler(&LoadClient::on_handshake, shared_from_this()));
+}
+
+void LoadClient::on_handshake(beast::error_code ec, std::size_t) {
+  if (!ec && response_->result() != http::status::switching_protocols) ec = net::error::connection_refused;
+  response_.reset();
+  if (ec) return note_failure("handshake", ec);
+  stream_.expires_never();
   ++stats_.connected;
   open_ = true;
   connected_at_ms_ = static_cast<std::uint64_t>(unix_ms_now());
   if (options_.behaviour == Behaviour::Stalled) return;  // never reads: the socket fills up
-  do_read();
+  if (take_frames()) do_read();
 }
 
 void LoadClient::do_read() {
-  ws_.async_read(buffer_, beast::bind_front_handler(&LoadClient::on_read, shared_from_this()));
+  // A slow client takes little at a time; the others all the socket holds.
+  const std::size_t want = options_.behaviour == Behaviour::Slow ? 2048 : 16384;
+  stream_.async_read_some(buffer_.prepare(want),
+                          beast::bind_front_handler(&LoadClient::on_read, shared_from_this()));
 }
 
 void LoadClient::on_read(beast::error_code ec, std::size_t bytes) {
@@ -92,13 +109,9 @@ void LoadClient::on_read(beast::error_code ec, std::size_t bytes) {
     open_ = false;
     return;
   }
-  ++stats_.messages;
+  buffer_.commit(bytes);
   stats_.bytes += bytes;
-  if (ws_.got_binary()) {
-    const auto data = buffer_.data();
-    handle_frame({static_cast<const char*>(data.data()), data.size()});
-  }
-  buffer_.consume(buffer_.size());
+  if (!take_frames()) return;
   if (options_.behaviour == Behaviour::Slow) {
     pause_.expires_after(options_.slow_read_pause);
     pause_.async_wait([self = shared_from_this()](beast::error_code e) {
@@ -107,6 +120,30 @@ void LoadClient::on_read(beast::error_code ec, std::size_t bytes) {
     return;
   }
   do_read();
+}
+
+bool LoadClient::take_frames() {
+  for (;;) {
+    const auto data = buffer_.data();
+    const std::string_view bytes(static_cast<const char*>(data.data()), data.size());
+    WsFrame frame;
+    const auto result = parse_frame(bytes, frame);
+    if (result == ParseResult::NeedMore) return true;
+    if (result == ParseResult::Bad || !frame.fin) {
+      ++stats_.decode_errors;
+      if (stats_.first_error.empty()) stats_.first_error = "malformed or fragmented WebSocket frame";
+      stop();
+      return false;
+    }
+    if (frame.opcode == 0x8) {  // close
+      ++stats_.closed_by_server;
+      stop();
+      return false;
+    }
+    if (frame.opcode == 0x1 || frame.opcode == 0x2) ++stats_.messages;
+    if (frame.opcode == 0x2) handle_frame(frame.payload);
+    buffer_.consume(frame.size);
+  }
 }
 
 void LoadClient::handle_frame(std::string_view bytes) {

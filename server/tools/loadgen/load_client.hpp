@@ -2,13 +2,18 @@
 // message, checks the frame sequence, measures the delay from the server's
 // stamp to receipt, and decodes each frame as a real client would.
 // It can also behave badly on purpose: read slowly, or stop reading.
+//
+// Cheap on purpose, so that one loadgen thread can follow thousands of
+// spectators: the upgrade is a Beast HTTP exchange, then the client reads
+// whatever the socket holds with one recv and splits it into frames itself
+// (ws_frame_parser.hpp), rather than running one Beast read per message.
 #pragma once
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core.hpp>
-#include <boost/beast/websocket.hpp>
+#include <boost/beast/http.hpp>
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -56,15 +61,20 @@ class LoadClient : public std::enable_shared_from_this<LoadClient> {
  private:
   void note_failure(const char* step, boost::beast::error_code ec);
   void on_connect(boost::beast::error_code ec);
-  void on_handshake(boost::beast::error_code ec);
+  void on_request_sent(boost::beast::error_code ec, std::size_t);
+  void on_handshake(boost::beast::error_code ec, std::size_t);
   void do_read();
   void on_read(boost::beast::error_code ec, std::size_t bytes);
+  // Takes every whole frame in buffer_; false when the connection must end.
+  bool take_frames();
   void handle_frame(std::string_view bytes);
 
   ClientOptions options_;
   ClientStats& stats_;
-  boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
-  boost::beast::flat_buffer buffer_;
+  boost::beast::tcp_stream stream_;
+  boost::beast::flat_buffer buffer_;  // received bytes not yet parsed
+  std::unique_ptr<boost::beast::http::request<boost::beast::http::empty_body>> request_;
+  std::unique_ptr<boost::beast::http::response<boost::beast::http::string_body>> response_;
   boost::asio::steady_timer pause_;
   std::unique_ptr<proto::FrameDecoder> decoder_;
   PoseFrame frame_;
