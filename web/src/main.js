@@ -184,7 +184,8 @@ function onControl(msg) {
   if (events.control(msg)) return;
   if (msg.type === 'replay' && serverReplay) serverReplay.status(msg);
   else if (msg.type === 'reach_map') {
-    if (overlays && players) overlays.setReachMap(msg, { 1: players.kits[1].shirtColor, [-1]: players.kits[-1].shirtColor });
+    if (overlays && players && overlays.setReachMap(msg, { 1: players.kits[1].shirtColor, [-1]: players.kits[-1].shirtColor }))
+      counters.reachMaps = (counters.reachMaps ?? 0) + 1;
   }
   else if (msg.type === 'feed') {
     if (msg.status === 'lost') hud.status(`The match feed is lost${msg.detail ? ` (${msg.detail})` : ''}. Waiting for it…`, true);
