@@ -216,6 +216,15 @@ void App::draw(const PoseFrame& f, int width, int height, double dt) {
   hud_->draw(info, width, height);
 }
 
+void App::draw_waiting(const std::string& status, int width, int height) {
+  renderer_->clear(width, height);
+  HudInfo info;
+  info.waiting = true;
+  info.camera = std::string(camera_mode_name(camera_.mode()));
+  info.status = status;
+  hud_->draw(info, width, height);
+}
+
 void App::cycle_player(int step) {
   const PoseFrame& f = *frame_;
   int slot = selected_ < 0 ? (step > 0 ? -1 : kMaxPlayers) : selected_;
@@ -314,12 +323,7 @@ int App::run_window() {
       lag_sum += lag_last;
       lag_max = std::max(lag_max, lag_last);
     } else {
-      renderer_->clear(width, height);
-      HudInfo info;
-      info.waiting = true;
-      info.camera = std::string(camera_mode_name(camera_.mode()));
-      info.status = meta_.status.empty() ? "waiting for " + source_->describe() : meta_.status;
-      hud_->draw(info, width, height);
+      draw_waiting(meta_.status.empty() ? "waiting for " + source_->describe() : meta_.status, width, height);
     }
     glfwSwapBuffers(window_);
     if (options_.simulate_slow_ms > 0)
@@ -352,9 +356,15 @@ int App::run_screenshot() {
   }
   if (!found) {
     check_hello();
-    std::fprintf(stderr, "matchcast-viewer: no frame at or after cycle %d from %s within %.0f s%s%s\n",
-                 options_.at, source_->describe().c_str(), options_.timeout_s,
-                 meta_.status.empty() ? "" : ": ", meta_.status.c_str());
+    const std::string why = "no frame at or after cycle " + std::to_string(options_.at) + " from " +
+                            source_->describe() + (meta_.status.empty() ? "" : ": " + meta_.status);
+    std::fprintf(stderr, "matchcast-viewer: %s (waited %.0f s)\n", why.c_str(), options_.timeout_s);
+    // The picture says it too: what the window would show.
+    target.bind();
+    draw_waiting(why, options_.width, options_.height);
+    glFinish();
+    Image image{options_.width, options_.height, target.read_rgb()};
+    write_png(options_.screenshot, image, error);
     return 2;
   }
   check_hello();
@@ -363,10 +373,7 @@ int App::run_screenshot() {
   camera_.snap();
   draw(*frame_, options_.width, options_.height, 0.0);
   glFinish();
-  Image image;
-  image.width = options_.width;
-  image.height = options_.height;
-  image.rgb = target.read_rgb();
+  Image image{options_.width, options_.height, target.read_rgb()};
   if (!write_png(options_.screenshot, image, error) || (!options_.report.empty() && !write_report(*frame_, error))) {
     std::fprintf(stderr, "matchcast-viewer: %s\n", error.c_str());
     return 1;

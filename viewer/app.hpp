@@ -25,7 +25,7 @@ class App {
   explicit App(ViewerOptions options);
   ~App();
   // The process exit code: 0 ok, 1 bad arguments or no OpenGL, 2 no frame
-  // in time for --screenshot.
+  // in time for --screenshot (the PNG then shows the reason).
   int run();
 
   // GLFW callbacks.
@@ -41,6 +41,8 @@ class App {
   int run_screenshot();
   void check_hello();
   void draw(const PoseFrame& frame, int width, int height, double dt);
+  // No picture yet: the sky and the reason in the middle.
+  void draw_waiting(const std::string& status, int width, int height);
   CameraTarget camera_target(const PoseFrame& frame);
   int nearest_to_ball(const PoseFrame& frame) const;
   void cycle_player(int step);

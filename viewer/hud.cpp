@@ -88,22 +88,7 @@ void Hud::flush(int width, int height) {
   quads_.clear();
 }
 
-void Hud::draw(const HudInfo& info, int width, int height) {
-  // Font pixels in screen pixels: readable on a laptop and on a big screen.
-  const float s = std::max(1.0f, std::round(static_cast<float>(height) / 300.0f));
-  const float line = (kGlyphH + 4) * s;
-
-  // Numbers above the players: the shirt colour with the number on it.
-  const float ls = std::max(1.0f, s - 1.0f);
-  for (const auto& l : info.labels) {
-    const std::string n = std::to_string(l.number);
-    const float w = text_width(n, ls) + 4 * ls, h = (kGlyphH + 4) * ls;
-    rect(l.px.x - w / 2 - ls, l.px.y - h - ls, w + 2 * ls, h + 2 * ls, {0.0f, 0.0f, 0.0f, 0.85f});
-    rect(l.px.x - w / 2, l.px.y - h, w, h, glm::vec4(l.shirt, 1.0f));
-    text(l.px.x - w / 2 + 2 * ls, l.px.y - h + 2 * ls, n, ls, glm::vec4(l.text, 1.0f));
-  }
-
-  // Scoreboard, top left: [chip] LEFT  1 - 5  RIGHT [chip]   12:34   PLAY ON
+void Hud::scoreboard(const HudInfo& info, float s, float line) {
   std::string score = std::to_string(info.score_left) + " - " + std::to_string(info.score_right);
   if (info.pen_left || info.pen_right)
     score += " (" + std::to_string(info.pen_left) + "-" + std::to_string(info.pen_right) + ")";
@@ -129,6 +114,25 @@ void Hud::draw(const HudInfo& info, int width, int height) {
   text(x, ty, clock, s, kWhite);
   x += text_width(clock, s) + 4 * pad;
   text(x, ty, mode, s, kYellow);
+}
+
+void Hud::draw(const HudInfo& info, int width, int height) {
+  // Font pixels in screen pixels: readable on a laptop and on a big screen.
+  const float s = std::max(1.0f, std::round(static_cast<float>(height) / 300.0f));
+  const float line = (kGlyphH + 4) * s, pad = 3 * s;
+
+  // Numbers above the players: the shirt colour with the number on it.
+  const float ls = std::max(1.0f, s - 1.0f);
+  for (const auto& l : info.labels) {
+    const std::string n = std::to_string(l.number);
+    const float w = text_width(n, ls) + 4 * ls, h = (kGlyphH + 4) * ls;
+    rect(l.px.x - w / 2 - ls, l.px.y - h - ls, w + 2 * ls, h + 2 * ls, {0.0f, 0.0f, 0.0f, 0.85f});
+    rect(l.px.x - w / 2, l.px.y - h, w, h, glm::vec4(l.shirt, 1.0f));
+    text(l.px.x - w / 2 + 2 * ls, l.px.y - h + 2 * ls, n, ls, glm::vec4(l.text, 1.0f));
+  }
+
+  // Scoreboard, top left: [chip] LEFT  1 - 5  RIGHT [chip]   12:34   PLAY ON
+  if (!info.waiting) scoreboard(info, s, line);
 
   // Camera and playback, bottom right.
   std::string state = info.camera;

@@ -52,6 +52,7 @@ class Hud {
   void rect(float x, float y, float w, float h, glm::vec4 color);
   void text(float x, float y, std::string_view s, float scale, glm::vec4 color);
   void flush(int width, int height);
+  void scoreboard(const HudInfo& info, float scale, float line);
 
   GLuint program_ = 0;
   GLint u_size_ = -1;

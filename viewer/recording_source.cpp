@@ -70,7 +70,9 @@ void RecordingSource::run() {
       char delay[32];
       std::snprintf(delay, sizeof delay, "%.0f", retry_.initial_s);
       buffer_.set_connected(false);
-      buffer_.set_status("cannot open recording " + path_ + ": " + error + "; retrying in " + delay + " s");
+      // The reader's errors usually name the file already.
+      const std::string what = error.find(path_) == std::string::npos ? path_ + ": " + error : error;
+      buffer_.set_status("cannot open recording " + what + "; retrying in " + delay + " s");
       std::unique_lock lock(mutex_);
       wake_.wait_for(lock, std::chrono::duration<double>(retry_.initial_s), [this] { return stop_; });
       continue;

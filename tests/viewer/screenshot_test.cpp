@@ -105,10 +105,11 @@ Shot screenshot(const std::string& source, int at, const std::string& camera, co
                 const std::vector<std::string>& extra = {}) {
   const std::string png = kOut + "/" + name + ".png", json = kOut + "/" + name + ".json";
   fs::remove(png);
-  std::vector<std::string> args = {MATCHCAST_XVFB_RUN, "-a", "-s", "-screen 0 1280x1024x24", MATCHCAST_VIEWER,
-                                   source, "--screenshot", png, "--at", std::to_string(at), "--camera", camera,
-                                   "--width", std::to_string(kWidth), "--height", std::to_string(kHeight),
-                                   "--report", json, "--timeout", "60"};
+  std::vector<std::string> args = xvfb(name);
+  const std::vector<std::string> viewer = {MATCHCAST_VIEWER, source, "--screenshot", png, "--at", std::to_string(at),
+                                           "--camera", camera, "--width", std::to_string(kWidth), "--height",
+                                           std::to_string(kHeight), "--report", json, "--timeout", "60"};
+  args.insert(args.end(), viewer.begin(), viewer.end());
   args.insert(args.end(), extra.begin(), extra.end());
   const Child c = spawn(args, kOut + "/" + name + ".log", false, kOut);
   Shot shot;
@@ -295,15 +296,25 @@ TEST(Screenshot, ARefusedRelayOrACorruptRecordingFailsWithAClearMessage) {
   std::ofstream(bad, std::ios::binary) << std::string(3000, '\x42');
   for (const auto& [source, expected] : std::vector<std::pair<std::string, std::string>>{
            {bad, "cannot open recording"}, {"ws://127.0.0.1:1/ws", "refused"}}) {
-    const std::string png = kOut + "/must-not-exist.png", log = kOut + "/refused.log";
+    const std::string name = source == bad ? "failed-corrupt-recording" : "failed-refused-relay";
+    const std::string png = kOut + "/" + name + ".png", log = kOut + "/" + name + ".log";
     fs::remove(png);
-    const Child c = spawn({MATCHCAST_XVFB_RUN, "-a", MATCHCAST_VIEWER, source, "--screenshot", png, "--at", "0",
-                           "--timeout", "3"},
-                          log, false, kOut);
+    std::vector<std::string> args = xvfb(name);
+    for (const std::string& a : {std::string(MATCHCAST_VIEWER), source, std::string("--screenshot"), png,
+                                 std::string("--at"), std::string("0"), std::string("--timeout"), std::string("3")})
+      args.push_back(a);
+    const Child c = spawn(args, log, false, kOut);
     ASSERT_GT(c.pid, 0);
     EXPECT_EQ(wait_for(c.pid, 60), 2) << slurp(log);
     EXPECT_NE(slurp(log).find(expected), std::string::npos) << slurp(log);
-    EXPECT_FALSE(fs::exists(png));
+    // The picture shows the reason instead of a game.
+    Image image;
+    std::string error;
+    ASSERT_TRUE(read_png(png, image, error)) << error;
+    std::size_t text = 0;  // the HUD's yellow status text
+    for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3)
+      text += image.rgb[i] > 200 && image.rgb[i + 1] > 180 && image.rgb[i + 2] < 120;
+    EXPECT_GT(text, 500u) << name << ": no message on the picture";
   }
 }
 

@@ -118,4 +118,11 @@ class Server {
   std::uint16_t port_ = 0;
 };
 
+// The start of an xvfb-run command line. A fixed auth file per run: without
+// one, xvfb-run makes and removes a temporary directory, and that removal
+// sometimes fails (exit 5) after the program ran.
+inline std::vector<std::string> xvfb(const std::string& name) {
+  return {MATCHCAST_XVFB_RUN, "-a", "-f", kOut + "/" + name + ".xauth", "-s", "-screen 0 1280x1024x24"};
+}
+
 }  // namespace mc::viewer::e2e

@@ -22,10 +22,13 @@ struct Figures {
 // Runs the window for `seconds` and reads the figures line it prints.
 Figures run_window(std::uint16_t port, double seconds, int slow_ms, const std::string& name) {
   const std::string log = kOut + "/" + name + ".log";
-  const Child c = spawn({MATCHCAST_XVFB_RUN, "-a", "-s", "-screen 0 1280x1024x24", MATCHCAST_VIEWER,
-                         "ws://127.0.0.1:" + std::to_string(port) + "/ws", "--width", "640", "--height", "360",
-                         "--quit-after", std::to_string(seconds), "--simulate-slow-ms", std::to_string(slow_ms)},
-                        log, false, kOut);
+  std::vector<std::string> args = xvfb(name);
+  for (const std::string& a : {std::string(MATCHCAST_VIEWER), "ws://127.0.0.1:" + std::to_string(port) + "/ws",
+                               std::string("--width"), std::string("640"), std::string("--height"),
+                               std::string("360"), std::string("--quit-after"), std::to_string(seconds),
+                               std::string("--simulate-slow-ms"), std::to_string(slow_ms)})
+    args.push_back(a);
+  const Child c = spawn(args, log, false, kOut);
   EXPECT_GT(c.pid, 0);
   EXPECT_EQ(wait_for(c.pid, seconds + 60), 0) << slurp(log);
   const std::string out = slurp(log + ".out");
