@@ -166,10 +166,12 @@ class NatsOriginEdge : public ::testing::Test {
     fs::create_directories(dir_);
     nats_port_ = free_port();
     ASSERT_TRUE(start_nats());
-    origin_port_ = start_server(origin_, "origin", {"--role", "origin"});
+    // Recording happens once: here at edge B (--record-at edge on it and
+    // on the origin); edge A, with the default, records nothing.
+    origin_port_ = start_server(origin_, "origin", {"--role", "origin", "--record-at", "edge"}, "rec-origin");
     ASSERT_NE(origin_port_, 0);
-    edge_a_port_ = start_server(edge_a_, "edge-a", {"--role", "edge", "--edge-games", "live"});
-    edge_b_port_ = start_server(edge_b_, "edge-b", {"--role", "edge"});  // every game
+    edge_a_port_ = start_server(edge_a_, "edge-a", {"--role", "edge", "--edge-games", "live"}, "rec-a");
+    edge_b_port_ = start_server(edge_b_, "edge-b", {"--role", "edge", "--record-at", "edge"}, "rec-b");  // every game
     ASSERT_NE(edge_a_port_, 0);
     ASSERT_NE(edge_b_port_, 0);
   }
@@ -194,8 +196,10 @@ class NatsOriginEdge : public ::testing::Test {
     return eventually([&] { return port_open(nats_port_); }, 10s);
   }
 
-  std::uint16_t start_server(ChildProcess& p, const std::string& name, std::vector<std::string> extra) {
-    std::vector<std::string> argv = {MATCHCAST_SERVER, "--port", "0", "--record-dir", "", "--threads", "1",
+  std::uint16_t start_server(ChildProcess& p, const std::string& name, std::vector<std::string> extra,
+                             const std::string& record_dir) {
+    std::vector<std::string> argv = {MATCHCAST_SERVER, "--port", "0", "--record-dir", (dir_ / record_dir).string(),
+                                     "--threads", "1",
                                      "--web", std::string(MATCHCAST_SOURCE_DIR) + "/web",
                                      "--nats-url", "nats://127.0.0.1:" + std::to_string(nats_port_),
                                      "--nats-reconnect-wait-ms", "200"};
@@ -261,6 +265,18 @@ TEST_F(NatsOriginEdge, BothEdgesDeliverTheOriginsFramesByteForByte) {
   EXPECT_TRUE(a.front().key);
   EXPECT_TRUE(b.front().key);
   EXPECT_EQ(at_a->bad() + at_b->bad(), 0);
+  // One recording, at edge B, growing with the game.
+  auto files = [&](const char* sub) {
+    std::vector<fs::path> out;
+    if (fs::exists(dir_ / sub))
+      for (const auto& e : fs::directory_iterator(dir_ / sub)) out.push_back(e.path());
+    return out;
+  };
+  EXPECT_TRUE(files("rec-origin").empty());
+  EXPECT_TRUE(files("rec-a").empty());
+  ASSERT_EQ(files("rec-b").size(), 1u);
+  EXPECT_EQ(files("rec-b").front().extension(), ".mcrec");
+  EXPECT_GT(fs::file_size(files("rec-b").front()), 10000u);
 }
 
 TEST_F(NatsOriginEdge, KillingOneEdgeCostsTheOtherEdgesSpectatorsNothing) {
