@@ -30,6 +30,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   po::options_description desc(
       "matchcast-server: broadcast a RoboCup 2D game as a live 3D stream\n\nOptions");
   // clang-format off
+  unsigned send_buffer_kb = 0;
   desc.add_options()
     ("help,h", "print this help and exit")
     ("config", po::value(&config_file), "read options from this file (key = value lines)")
@@ -70,6 +71,8 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     ("tls-cert", po::value(&o.relay.tls_cert_file),
         "PEM certificate (chain) file: with --tls-key, the port speaks HTTPS and WSS only")
     ("tls-key", po::value(&o.relay.tls_key_file), "PEM private key file of --tls-cert")
+    ("send-buffer-kb", po::value(&send_buffer_kb)->default_value(static_cast<unsigned>(o.relay.socket_send_buffer / 1024)),
+        "kernel send buffer per connection (bounds a stalled spectator's kernel memory), 0 = OS autotuning")
     ("role", po::value(&role)->default_value(role),
         "standalone (one machine, no NATS), origin (publish the feeds on NATS), "
         "edge (serve games from NATS, no feeds) or both")
@@ -111,6 +114,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     exit_code = 2;
     return std::nullopt;
   }
+  o.relay.socket_send_buffer = static_cast<std::size_t>(send_buffer_kb) * 1024;
   if (feed.speed <= 0 || feed.speed > 100) {
     message = "matchcast-server: --speed must be in (0, 100]";
     exit_code = 2;

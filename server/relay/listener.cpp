@@ -54,6 +54,11 @@ void Listener::on_accept(beast::error_code ec, net::ip::tcp::socket socket) {
     // Out of file descriptors and similar: log and keep accepting.
     log_event("accept_failed", ec.message());
   } else {
+    if (context_.config.socket_send_buffer > 0) {
+      beast::error_code ignored;
+      socket.set_option(net::socket_base::send_buffer_size(static_cast<int>(context_.config.socket_send_buffer)),
+                        ignored);
+    }
     std::make_shared<HttpSession>(std::move(socket), context_)->run();
   }
   do_accept();

@@ -28,6 +28,12 @@ struct RelayConfig {
   // slow: it is closed (close code 1008, reason "too slow").
   std::chrono::milliseconds stall_timeout{5000};
 
+  // Kernel send buffer of each connection (SO_SNDBUF; 0 = the OS's
+  // autotuning, up to 4 MB per socket on Linux). Bounds the kernel memory a
+  // stalled spectator holds and makes its stall visible to stall_timeout;
+  // 64 KiB is still 10 s of a 20 Hz stream.
+  std::size_t socket_send_buffer = 64 * 1024;
+
   // Inbound limits: spectators send almost nothing (small JSON controls).
   std::size_t max_inbound_message = 4096;
   std::size_t max_http_body = 8192;

@@ -41,6 +41,10 @@ void LoadClient::start() {
   beast::error_code ec;
   socket.open(options_.server.protocol(), ec);
   if (!ec) socket.bind({options_.source, 0}, ec);
+  // A stalled spectator with a small window fills up in seconds, not
+  // minutes: the relay's stall handling is then what is measured.
+  if (!ec && options_.behaviour == Behaviour::Stalled)
+    socket.set_option(net::socket_base::receive_buffer_size(4096), ec);
   if (ec) {
     note_failure("bind", ec);
     return;
