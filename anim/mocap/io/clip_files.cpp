@@ -1,5 +1,8 @@
 #include "anim/mocap/io/clip_files.hpp"
 
+#include <unistd.h>
+
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -20,7 +23,8 @@ bool read_file(const std::string& path, std::string& out, std::string& error) {
 }
 
 bool write_file(const std::string& path, const std::string& bytes, std::string& error) {
-  const std::string tmp = path + ".tmp";
+  // A private temporary name: tests running at once may write the same cache.
+  const std::string tmp = path + "." + std::to_string(::getpid()) + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) { error = tmp + ": cannot create"; return false; }
