@@ -61,7 +61,22 @@ std::string rle_decode(const std::string& rle, std::size_t expected) {
   return out;
 }
 
+// Eleven stamina values (-1: no player), each in [-1, 1e6].
+std::array<int, 11> stamina_from(const json& j) {
+  if (!j.is_array() || j.size() != 11) throw std::runtime_error("stamina must be an array of 11 numbers");
+  std::array<int, 11> out{};
+  for (std::size_t i = 0; i < 11; ++i) {
+    const int v = j.at(i).get<int>();
+    if (v < -1 || v > 1000000) throw std::runtime_error("stamina out of range");
+    out[i] = v;
+  }
+  return out;
+}
+
 struct ToJson {
+  json operator()(const StaminaUpdate& e) const {
+    return {{"type", "stamina"}, {"seq", e.seq}, {"time", e.time}, {"left", e.left}, {"right", e.right}};
+  }
   json operator()(const ReachMapUpdate& e) const {
     json j = {{"type", "reach_map"}, {"seq", e.seq}, {"time", e.time},
               {"grid", {{"w", e.width}, {"h", e.height}, {"cell", e.cell}, {"x0", e.x0}, {"y0", e.y0}}},
@@ -188,6 +203,14 @@ ControlMessage parse(const json& j, const std::string& type) {
       e.ball_unum = unum_from(b->at("unum"));
       e.ball_time = b->at("t").get<double>();
     }
+    return e;
+  }
+  if (type == "stamina") {
+    StaminaUpdate e;
+    e.seq = j.at("seq").get<std::uint32_t>();
+    e.time = j.at("time").get<int>();
+    e.left = stamina_from(j.at("left"));
+    e.right = stamina_from(j.at("right"));
     return e;
   }
   throw std::invalid_argument("unknown control message type \"" + type + "\"");

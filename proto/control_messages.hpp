@@ -6,6 +6,7 @@
 // frame where the foot meets the ball; metadata changes apply from `seq` on.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -75,6 +76,15 @@ struct FeedStatus {
   std::string detail;                // human-readable reason
 };
 
+// "stamina": metadata, each player's stamina, once a second (rcssserver's
+// units, 0..stamina_max of the hello's server parameters; -1 for a slot
+// with no player). The pose frames do not carry it: it changes slowly.
+struct StaminaUpdate {
+  std::uint32_t seq = 0;
+  int time = 0;
+  std::array<int, 11> left{}, right{};  // by unum - 1
+};
+
 // "reach_map": optional analysis overlay (issue 9), a few times per second
 // when the feed is asked for it: which team gets first to each cell of a grid
 // over the pitch (anim/mocap's capability model), and who gets first to the
@@ -94,7 +104,8 @@ struct ReachMapUpdate {
 };
 
 using ControlMessage =
-    std::variant<KickEvent, GoalEvent, PlayModeEvent, CardEvent, ScoreUpdate, TeamsUpdate, FeedStatus, ReachMapUpdate>;
+    std::variant<KickEvent, GoalEvent, PlayModeEvent, CardEvent, ScoreUpdate, TeamsUpdate, FeedStatus, ReachMapUpdate,
+                 StaminaUpdate>;
 
 nlohmann::json control_to_json_value(const ControlMessage& message);
 std::string to_json(const ControlMessage& message);  // one line

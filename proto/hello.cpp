@@ -14,7 +14,7 @@ constexpr const char* kClientParams[] = {
     "half_time", "extra_half_time", "nr_normal_halfs", "nr_extra_halfs", "simulator_step",
     "ball_size", "player_size", "kickable_margin", "goal_width", "catchable_area_l",
     "catchable_area_w", "tackle_dist", "tackle_back_dist", "tackle_width", "visible_distance",
-    "ball_speed_max", "player_speed_max", "penalty_shoot_outs"};
+    "ball_speed_max", "player_speed_max", "penalty_shoot_outs", "stamina_max"};
 
 json arr3(const std::array<float, 3>& a) { return json::array({a[0], a[1], a[2]}); }
 

@@ -44,6 +44,28 @@ TEST(ControlMessages, EveryTypeRoundTrips) {
   EXPECT_TRUE(feed.lost);
   EXPECT_EQ(feed.detail, "no datagram for 3 s");
   EXPECT_FALSE(std::get<FeedStatus>(round_trip(FeedStatus{false, 100, 1, ""})).lost);
+  StaminaUpdate st{200, 100, {}, {}};
+  st.left.fill(8000);
+  st.left[6] = 4123;
+  st.right.fill(-1);
+  st.right[0] = 7000;
+  const auto stamina = std::get<StaminaUpdate>(round_trip(st));
+  EXPECT_EQ(stamina.seq, 200u);
+  EXPECT_EQ(stamina.left[6], 4123);
+  EXPECT_EQ(stamina.right[0], 7000);
+  EXPECT_EQ(stamina.right[10], -1);
+}
+
+TEST(ControlMessages, StaminaNeedsElevenValuesInRange) {
+  ControlMessage m;
+  std::string error;
+  const std::string eleven = "[1,2,3,4,5,6,7,8,9,10,11]";
+  EXPECT_TRUE(control_from_json(R"({"type":"stamina","seq":1,"time":1,"left":)" + eleven + R"(,"right":)" + eleven + "}", m, error)) << error;
+  EXPECT_FALSE(control_from_json(R"({"type":"stamina","seq":1,"time":1,"left":[1,2],"right":)" + eleven + "}", m, error));
+  EXPECT_NE(error.find("11"), std::string::npos) << error;
+  EXPECT_FALSE(control_from_json(R"({"type":"stamina","seq":1,"time":1,"left":[1,2,3,4,5,6,7,8,9,10,-7],"right":)" + eleven + "}", m, error));
+  EXPECT_NE(error.find("out of range"), std::string::npos) << error;
+  EXPECT_FALSE(control_from_json(R"({"type":"stamina","seq":1,"time":1,"left":"x","right":)" + eleven + "}", m, error));
 }
 
 TEST(ControlMessages, ShiftFramesMovesSeqAndContactTimeTogether) {

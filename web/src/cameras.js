@@ -156,11 +156,14 @@ export class Cameras {
         break;
       }
       case 'goal': {
-        // Behind the goal the ball is nearer to, raised, looking up the pitch.
+        // The goal line the ball is nearer to, seen along itself from beside
+        // the pitch (level with the line, as a referee's goal-line camera):
+        // the line runs straight up the screen through the goal mouth, so a
+        // ball over it is plainly over.
         const s = ball.x >= 0 ? 1 : -1;
-        this.goal.set(s * (F.length / 2 + 9), 5.5, THREE.MathUtils.clamp(ball.z, -10, 10) * 0.4);
-        this.lookGoal.set(ball.x, 0.5, ball.z);
-        this.fovGoal = 50;
+        this.goal.set(s * F.length / 2, 2.5, F.width / 2 + 9);
+        this.lookGoal.set(s * F.length / 2, 0.8, 0);
+        this.fovGoal = aspect < 1 ? 45 : 28;
         break;
       }
       case 'top': {

@@ -190,12 +190,20 @@ function onControl(msg) {
   else if (msg.type === 'feed') {
     if (msg.status === 'lost') hud.status(`The match feed is lost${msg.detail ? ` (${msg.detail})` : ''}. Waiting for it…`, true);
     else if (msg.status === 'back') hud.status(null);
+  } else if (msg.type === 'stamina') {
+    stamina = { 1: msg.left, [-1]: msg.right };  // by unum - 1, -1 for an empty slot
   } else if (msg.type === 'teams') {
     for (const [side, t] of [[1, msg.left], [-1, msg.right]]) if (t?.name && hud.teams?.[side]) hud.teams[side].name = t.name;
     if (hud.teams) hud.setTeams(hud.teams[1], hud.teams[-1]);
   }
 }
 let lastControl = null;
+let stamina = null;  // the last "stamina" message: { 1: left[11], -1: right[11] }
+// A player's stamina from the last "stamina" message, NaN when there is none.
+function staminaOf(side, unum) {
+  const v = stamina?.[side]?.[unum - 1];
+  return Number.isFinite(v) && v >= 0 ? v : NaN;
+}
 
 // The decoder module is loaded before the socket opens, so that no frame
 // arrives before there is something to decode it.
@@ -332,7 +340,7 @@ function frameLoop(now) {
     hud.update(view);
     const rig = selected ? players.get(selected) : null;
     hud.player(rig?.pose ? { side: rig.side, unum: rig.unum, goalie: (rig.pose.state & STATE.GOALIE) !== 0,
-      stamina: rig.pose.stamina, staminaMax: match?.params?.stamina_max } : null);
+      stamina: staminaOf(rig.side, rig.unum), staminaMax: match?.params?.stamina_max } : null);
   }
   const hide = cameras.update(dt, { ball: view?.ball ?? { x: 0, y: 0, z: 0 }, players, selected });
   if (players && players.hiddenKey !== hide) players.hiddenKey = hide;
