@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 namespace mc::anim {
 
@@ -13,6 +15,15 @@ enum class DetailLevel : std::uint8_t {
   Kick = 2,  // kicks, tackles and catches only; players glide standing otherwise
   Full = 3,  // everything
 };
+
+// "none", "run", "kick" or "full"; nullopt for anything else.
+inline std::optional<DetailLevel> detail_from_name(std::string_view name) {
+  if (name == "none") return DetailLevel::None;
+  if (name == "run") return DetailLevel::Run;
+  if (name == "kick") return DetailLevel::Kick;
+  if (name == "full") return DetailLevel::Full;
+  return std::nullopt;
+}
 
 struct AnimConfig {
   // Following 10 Hz states an output frame waits for. Two is the paper's

@@ -1,5 +1,7 @@
 #include "proto/control_messages.hpp"
 
+#include <algorithm>
+
 #include "proto/pose_frame.hpp"
 
 #include <cmath>
@@ -217,6 +219,17 @@ ControlMessage parse(const json& j, const std::string& type) {
 }
 
 }  // namespace
+
+StaminaUpdate stamina_update(const WorldState& state) {
+  StaminaUpdate u;
+  u.time = state.time;
+  for (int i = 0; i < kMaxPlayers; ++i) {
+    const PlayerState& p = state.players[static_cast<std::size_t>(i)];
+    const int v = p.state != 0 ? static_cast<int>(std::lround(std::clamp(p.stamina, 0.0, 1e6))) : -1;
+    (i < kPlayersPerSide ? u.left : u.right)[static_cast<std::size_t>(i % kPlayersPerSide)] = v;
+  }
+  return u;
+}
 
 json control_to_json_value(const ControlMessage& message) { return std::visit(ToJson{}, message); }
 std::string to_json(const ControlMessage& message) { return control_to_json_value(message).dump(); }

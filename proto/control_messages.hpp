@@ -103,6 +103,9 @@ struct ReachMapUpdate {
   double ball_time = 0;              // s from this frame
 };
 
+// The "stamina" message of a state: every player's stamina, -1 for an empty slot.
+StaminaUpdate stamina_update(const WorldState& state);
+
 using ControlMessage =
     std::variant<KickEvent, GoalEvent, PlayModeEvent, CardEvent, ScoreUpdate, TeamsUpdate, FeedStatus, ReachMapUpdate,
                  StaminaUpdate>;

@@ -129,9 +129,12 @@ int main(int argc, char** argv) {
     if (arg == "--png" && i + 1 < argc) png = argv[++i];
     else if (arg == "--lookahead" && i + 1 < argc) cfg.lookahead_cycles = std::atoi(argv[++i]);
     else if (arg == "--detail" && i + 1 < argc) {
-      const std::string d = argv[++i];
-      cfg.detail = d == "none" ? DetailLevel::None : d == "run" ? DetailLevel::Run
-                 : d == "kick" ? DetailLevel::Kick : DetailLevel::Full;
+      const auto d = detail_from_name(argv[++i]);
+      if (!d) {
+        std::fprintf(stderr, "%s: --detail must be none, run, kick or full\n", argv[0]);
+        return 2;
+      }
+      cfg.detail = *d;
     } else if (!arg.empty() && arg[0] == '-') {
       std::fprintf(stderr, "usage: %s [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
       return 2;

@@ -17,6 +17,8 @@ namespace mc::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+// States between "stamina" messages: once a second at 10 Hz.
+constexpr std::uint64_t kStaminaEveryStates = 10;
 
 std::uint64_t unix_ms() {
   using namespace std::chrono;
@@ -145,7 +147,7 @@ bool LogFeed::play_once() {
     if (!source->next(state)) return wait_until(Clock::now() + std::chrono::seconds(1));
   }
 
-  anim::Animator animator(anim::human_skeleton(), source->params());
+  anim::Animator animator(anim::human_skeleton(), source->params(), config_.anim);
   proto::FrameEncoder encoder(anim::human_skeleton(),
                               proto::EncoderOptions{config_.keyframe_interval});
   std::vector<PoseFrame> frames;
@@ -154,10 +156,13 @@ bool LogFeed::play_once() {
   std::unique_ptr<anim::mocap::ReachMapPublisher> reach;
   if (config_.reach_model)
     reach = std::make_unique<anim::mocap::ReachMapPublisher>(config_.reach_model, config_.reach_every_states);
-  std::vector<proto::ReachMapUpdate> reach_pending;
+  // Messages made from a state (reach maps, stamina) go out just before the
+  // first frame at or after the state's cycle, numbered like that frame.
+  std::vector<std::pair<int, proto::ControlMessage>> timed_pending;
   const auto interval = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double, std::milli>(kFrameIntervalMs / config_.speed));
   auto deadline = Clock::now();
+  bool stamina_sent = false;
 
   auto publish = [&](std::vector<PoseFrame>& batch) {
     for (PoseFrame& f : batch) {
@@ -172,13 +177,13 @@ bool LogFeed::play_once() {
       const std::int64_t shift = static_cast<std::int64_t>(next_seq_) - f.seq;
       for (; next_event < events.size() && events[next_event].seq <= f.seq; ++next_event)
         publish_event(events[next_event], shift);
-      // Reach maps go out with the first frame at or after their cycle.
       std::size_t sent = 0;
-      for (; sent < reach_pending.size() && reach_pending[sent].time <= f.time; ++sent) {
-        reach_pending[sent].seq = next_seq_;
-        channel_->publish_control(proto::to_json(proto::ControlMessage{reach_pending[sent]}));
+      for (; sent < timed_pending.size() && timed_pending[sent].first <= f.time; ++sent) {
+        proto::ControlMessage& m = timed_pending[sent].second;
+        std::visit([&](auto& msg) { msg.seq = next_seq_; }, m);
+        channel_->publish_control(proto::to_json(m));
       }
-      reach_pending.erase(reach_pending.begin(), reach_pending.begin() + static_cast<std::ptrdiff_t>(sent));
+      timed_pending.erase(timed_pending.begin(), timed_pending.begin() + static_cast<std::ptrdiff_t>(sent));
       f.seq = next_seq_++;
       f.server_time_ms = unix_ms();
       bool key = false;
@@ -218,7 +223,12 @@ bool LogFeed::play_once() {
   do {
     if (reach) {
       proto::ReachMapUpdate m;
-      if (reach->push(state, source->params(), m)) reach_pending.push_back(std::move(m));
+      if (reach->push(state, source->params(), m)) timed_pending.emplace_back(m.time, std::move(m));
+    }
+    // Stamina once a second, and with the first state of each pass.
+    if (state.index % kStaminaEveryStates == 0 || !stamina_sent) {
+      timed_pending.emplace_back(state.time, proto::stamina_update(state));
+      stamina_sent = true;
     }
     animator.push(state, frames, &events);
     if (!publish(frames)) return false;

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "anim/anim_events.hpp"
+#include "anim/anim_config.hpp"
 #include "anim/mocap/reach_overlay.hpp"
 #include "server/ingest/state_source.hpp"
 #include "server/relay/channel.hpp"
@@ -35,6 +36,9 @@ struct FeedConfig {
   // Frames between keyframes (1 s at 20 Hz): the longest a joiner or a
   // skipping client waits for a picture.
   int keyframe_interval = 20;
+  // Look-ahead and detail level (anim/anim_config.hpp): each channel may
+  // show its own level, as in the perception study.
+  anim::AnimConfig anim;
   // Optional analysis overlay (issue 9): when set, a "reach_map" control
   // message (proto SPEC 5.4) goes out every `reach_every_states` states
   // (4 = 2.5 Hz), just before the first frame at or after its cycle.

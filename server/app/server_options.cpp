@@ -26,6 +26,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   unsigned max_queue_kb = 0, stall_ms = 0;
   std::string role = "standalone", edge_games, record_at = "origin";
   unsigned nats_reconnect_ms = 0, origin_silence_ms = 0;
+  std::vector<std::string> details;
   std::string reach_channels, mocap_dir = source_dir + "/../shared/data/mocap", mocap_cache = "mocap-cache";
   po::options_description desc(
       "matchcast-server: broadcast a RoboCup 2D game as a live 3D stream\n\nOptions");
@@ -42,6 +43,12 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     ("speed", po::value(&feed.speed)->default_value(1.0), "playback speed, 1 = real time")
     ("keyframe-interval", po::value(&feed.keyframe_interval)->default_value(20),
         "frames between keyframes (20 = 1 s)")
+    ("detail", po::value(&details)->composing(),
+        "animation detail none|run|kick|full (the perception study's levels), for every channel "
+        "as LEVEL or for one as CHANNEL=LEVEL; repeatable (default: full)")
+    ("lookahead", po::value(&feed.anim.lookahead_cycles)->default_value(feed.anim.lookahead_cycles),
+        "following 10 Hz states each frame waits for, 1..4 (each adds 100 ms of delay and lengthens "
+        "the kick preparation)")
     ("reach-overlay", po::value(&reach_channels),
         "channels that also send the reach map (who gets where first, from motion capture), "
         "2.5 times a second: comma-separated names or 'all' (default: none)")
@@ -120,6 +127,11 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     exit_code = 2;
     return std::nullopt;
   }
+  if (feed.anim.lookahead_cycles < 1 || feed.anim.lookahead_cycles > 4) {
+    message = "matchcast-server: --lookahead must be in [1, 4]";
+    exit_code = 2;
+    return std::nullopt;
+  }
   if (feed.keyframe_interval < 1 || feed.keyframe_interval > 1200) {
     message = "matchcast-server: --keyframe-interval must be in [1, 1200]";
     exit_code = 2;
@@ -186,6 +198,28 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
         return std::nullopt;
       }
     o.feeds.push_back(cf);
+  }
+  // --detail LEVEL applies to every channel, CHANNEL=LEVEL to one (later wins).
+  for (const std::string& d : details) {
+    const auto eq = d.find('=');
+    const std::string channel = eq == std::string::npos ? "" : d.substr(0, eq);
+    const auto level = anim::detail_from_name(eq == std::string::npos ? d : d.substr(eq + 1));
+    if (!level) {
+      message = "matchcast-server: --detail must be none, run, kick or full (or CHANNEL=LEVEL), not '" + d + "'";
+      exit_code = 2;
+      return std::nullopt;
+    }
+    bool any = false;
+    for (auto& cf : o.feeds)
+      if (channel.empty() || cf.channel == channel) {
+        cf.feed.anim.detail = *level;
+        any = true;
+      }
+    if (!any) {
+      message = "matchcast-server: --detail names no channel of this server: '" + channel + "'";
+      exit_code = 2;
+      return std::nullopt;
+    }
   }
   if (!reach_channels.empty()) {
     std::string error;

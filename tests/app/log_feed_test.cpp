@@ -66,6 +66,7 @@ TEST(LogFeed, PublishesDecodableContinuousFramesOfTheRealGame) {
   std::uint32_t last_seq = 0;
   bool have = false;
   int kicks = 0;
+  std::vector<proto::StaminaUpdate> stamina;
   for (const auto& m : frames) {
     if (!m.binary()) {
       // Events travel between frames and name a frame at or after the last one.
@@ -77,6 +78,7 @@ TEST(LogFeed, PublishesDecodableContinuousFramesOfTheRealGame) {
         EXPECT_GE(k->unum, 1);
         EXPECT_LE(k->unum, 11);
       }
+      if (auto* s = std::get_if<proto::StaminaUpdate>(&c)) stamina.push_back(*s);
       continue;
     }
     ASSERT_TRUE(decoder.decode(*m.bytes, f, error)) << error;
@@ -95,6 +97,26 @@ TEST(LogFeed, PublishesDecodableContinuousFramesOfTheRealGame) {
       ++moved;
   EXPECT_GE(moved, 5);
   EXPECT_GE(kicks, 1) << "ten seconds of a real game without a kick event";
+  // Stamina once a second (200 frames = 10 s), every player's in
+  // [0, stamina_max], and it is not a constant: running players tire.
+  ASSERT_GE(stamina.size(), 8u);
+  EXPECT_LE(stamina.size(), 12u);
+  const double stamina_max = hello.server_params.at("stamina_max");
+  bool varies = false;
+  for (std::size_t i = 0; i < stamina.size(); ++i) {
+    if (i > 0) {  // sent with the first frame at its cycle: a frame or two either way
+      EXPECT_NEAR(static_cast<double>(stamina[i].seq - stamina[i - 1].seq), 20.0, 6.0);
+    }
+    for (const auto* team : {&stamina[i].left, &stamina[i].right})
+      for (int v : *team) {
+        EXPECT_GE(v, 0);
+        EXPECT_LE(v, stamina_max);
+        varies = varies || v != stamina[0].left[0];
+      }
+  }
+  EXPECT_TRUE(varies);
+  EXPECT_NEAR(static_cast<double>(stamina.back().seq - stamina.front().seq) / static_cast<double>(stamina.size() - 1),
+              20.0, 2.0);
 }
 
 TEST(LogFeed, RefusesAMissingOrEmptyLogWithAClearError) {

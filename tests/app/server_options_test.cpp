@@ -1,0 +1,45 @@
+// matchcast-server's command line: the animation options per channel.
+#include "server/app/server_options.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace mc::app {
+namespace {
+
+std::optional<ServerOptions> parse(std::vector<const char*> args, std::string& message) {
+  args.insert(args.begin(), "matchcast-server");
+  int exit_code = -1;
+  return parse_server_options(static_cast<int>(args.size()), args.data(), message, exit_code);
+}
+
+TEST(ServerOptions, DetailIsFullByDefaultAndSetPerChannelOrForAll) {
+  std::string message;
+  auto o = parse({"--rcg", "a=x.rcg", "--rcg", "b=y.rcg"}, message);
+  ASSERT_TRUE(o) << message;
+  ASSERT_EQ(o->feeds.size(), 2u);
+  EXPECT_EQ(o->feeds[0].feed.anim.detail, anim::DetailLevel::Full);
+  EXPECT_EQ(o->feeds[0].feed.anim.lookahead_cycles, 2);
+
+  o = parse({"--rcg", "a=x.rcg", "--rcg", "b=y.rcg", "--detail", "run", "--detail", "b=kick", "--lookahead", "3"},
+            message);
+  ASSERT_TRUE(o) << message;
+  EXPECT_EQ(o->feeds[0].feed.anim.detail, anim::DetailLevel::Run);
+  EXPECT_EQ(o->feeds[1].feed.anim.detail, anim::DetailLevel::Kick);
+  EXPECT_EQ(o->feeds[1].feed.anim.lookahead_cycles, 3);
+}
+
+TEST(ServerOptions, BadDetailOrLookaheadIsAClearError) {
+  std::string message;
+  EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--detail", "most"}, message));
+  EXPECT_NE(message.find("--detail must be none, run, kick or full"), std::string::npos) << message;
+  EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--detail", "zz=run"}, message));
+  EXPECT_NE(message.find("no channel"), std::string::npos) << message;
+  EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--lookahead", "0"}, message));
+  EXPECT_NE(message.find("--lookahead"), std::string::npos) << message;
+  EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--lookahead", "9"}, message));
+}
+
+}  // namespace
+}  // namespace mc::app
