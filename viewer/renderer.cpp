@@ -6,6 +6,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "viewer/font.hpp"
+
 namespace mc::viewer {
 namespace {
 
@@ -101,6 +103,27 @@ std::vector<float> flatten(const std::vector<Vertex>& in) {
 
 const std::vector<int> kLayout = {3, 3, 3};
 
+// Quads for the set pixels of `text`, in a plane facing `normal` (+X or
+// -X in the chest's local space), centred on `center`, `height` tall.
+// Columns run along `right` (what a viewer facing that side sees as right).
+void number_quads(std::vector<float>& out, const std::string& text, glm::vec3 center, float height,
+                  glm::vec3 normal, glm::vec3 right) {
+  const float px = height / kGlyphH;
+  const float width = static_cast<float>(text_columns(text)) * px;
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const glm::vec3 origin = center - right * (width / 2) + up * (height / 2);
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto& g = glyph(text[i]);
+    for (int r = 0; r < kGlyphH; ++r)
+      for (int c = 0; c < kGlyphW; ++c) {
+        if (!(g[r] & (1u << (kGlyphW - 1 - c)))) continue;
+        const float x0 = static_cast<float>(i * kGlyphAdvance + c) * px;
+        const glm::vec3 a = origin + right * x0 - up * (r * px), b = a + right * px, d = a - up * px, e = b - up * px;
+        for (const auto& p : {a, b, e, a, e, d}) push(out, p, normal, glm::vec3(1.0f));
+      }
+  }
+}
+
 }  // namespace
 
 Renderer::~Renderer() {
@@ -135,6 +158,30 @@ void Renderer::set_field(const proto::FieldGeometry& field) {
   v = flatten(pitch.center_lines);
   center_lines_.upload(v.data(), v.size(), kLayout);
   goals_ = pitch.goals;
+}
+
+const gl::Mesh& Renderer::number_mesh(int number, const Segment& chest) {
+  const std::array<float, 6> shape{chest.size[0], chest.size[1], chest.size[2],
+                                   chest.center[0], chest.center[1], chest.center[2]};
+  if (shape != numbers_chest_) {
+    numbers_.clear();
+    numbers_chest_ = shape;
+  }
+  auto& mesh = numbers_[number];
+  if (!mesh) {
+    const glm::vec3 size(chest.size[0], chest.size[1], chest.size[2]);
+    const glm::vec3 c(chest.center[0], chest.center[1], chest.center[2]);
+    const float h = std::min(size.y, size.z) * 0.55f;
+    std::vector<float> v;
+    const std::string text = std::to_string(number);
+    // Back (-X): seen from behind, the body's right (+Z) is on the right.
+    number_quads(v, text, c - glm::vec3(size.x / 2 + 0.004f, 0.0f, 0.0f), h, {-1, 0, 0}, {0, 0, 1});
+    // Front (+X), half size and a little higher, as the page.
+    number_quads(v, text, c + glm::vec3(size.x / 2 + 0.004f, h * 0.2f, 0.0f), h * 0.5f, {1, 0, 0}, {0, 0, -1});
+    mesh = std::make_unique<gl::Mesh>();
+    mesh->upload(v.data(), v.size(), kLayout);
+  }
+  return *mesh;
 }
 
 void Renderer::clear(int width, int height) {
@@ -209,6 +256,10 @@ void Renderer::draw(const PoseFrame& frame, const proto::Hello& hello, const Pla
     const Kit kit = team_kit(p.side == Side::Right ? hello.right : hello.left, p.side,
                              (p.state & state_bits::kGoalie) != 0);
     for (const auto& s : segments_) draw_mesh(s.sphere ? sphere_ : cube_, s.model, kit.color(s.part));
+    const int chest = model.chest_joint();
+    if (chest >= 0 && p.unum > 0 && p.unum < 100)
+      draw_mesh(number_mesh(p.unum, model.skeleton().joints[static_cast<std::size_t>(chest)].segment),
+                joints_[static_cast<std::size_t>(chest)], kit.number);
   }
 
   const glm::vec3 ball(frame.ball.x, std::max(frame.ball.z, kBallRadius), frame.ball.y);

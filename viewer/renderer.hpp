@@ -5,6 +5,9 @@
 // OpenGL 3.3 core, which Mesa's llvmpipe runs under Xvfb.
 #pragma once
 
+#include <array>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,6 +41,10 @@ class Renderer {
  private:
   void draw_mesh(const gl::Mesh& mesh, const glm::mat4& model, const glm::vec3& color, float alpha = 1.0f,
                  bool lit = true);
+  // The shirt number on the back (large) and the front (small) of the chest
+  // segment, as quads in the chest joint's local space; built once per
+  // number and chest shape.
+  const gl::Mesh& number_mesh(int number, const Segment& chest);
 
   GLuint program_ = 0;
   GLint u_mvp_ = -1, u_model_ = -1, u_tint_ = -1, u_use_tint_ = -1, u_alpha_ = -1, u_lit_ = -1;
@@ -46,6 +53,8 @@ class Renderer {
   glm::mat4 view_proj_{1.0f};
   std::vector<glm::mat4> joints_;
   std::vector<SegmentInstance> segments_;
+  std::map<int, std::unique_ptr<gl::Mesh>> numbers_;
+  std::array<float, 6> numbers_chest_{};  // the chest size and centre the numbers were built for
 };
 
 }  // namespace mc::viewer
