@@ -124,12 +124,16 @@ void EdgeRelay::sync_games() {
       std::string bytes, error;
       const auto r = link_->last_message(stream_name(config_.subject_prefix),
                                          key_subject(config_.subject_prefix, d.name), bytes, error);
-      if (r == NatsLink::Fetch::Failed) relay::log_event("edge_snapshot_failed", d.name + ": " + error);
-      if (r != NatsLink::Fetch::Failed) d.sync->on_snapshot(r == NatsLink::Fetch::Found ? &bytes : nullptr);
+      // No JetStream (or not yet): the live messages go on meanwhile, and
+      // the hello the origin repeats on the live subject arrives by itself.
+      if (r == NatsLink::Fetch::Failed && snapshot_failures_++ % 100 == 0)
+        relay::log_event("edge_snapshot_failed", d.name + ": " + error + " (" +
+                                                     std::to_string(snapshot_failures_) + " so far)");
+      d.sync->on_snapshot(r == NatsLink::Fetch::Found ? &bytes : nullptr);
       std::lock_guard lock(mutex_);
       Game& g = games_[d.name];
-      // Ask again later while the read failed or no hello is known yet.
-      g.fetch = r == NatsLink::Fetch::Failed || !d.sync->has_hello();
+      // Ask again later while no hello is known yet.
+      g.fetch = !d.sync->has_hello();
       g.next_fetch = Clock::now() + config_.reconnect_wait;
     }
     if (!d.sync->resync_pending()) d.sync->check_silence(Clock::now(), config_.origin_silence);

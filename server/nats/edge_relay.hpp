@@ -7,7 +7,8 @@
 // held while the game's snapshot (hello + latest keyframe) is read from the
 // keyframe stream, so spectators get a picture at once and then the live
 // frames, each once. A game with no snapshot yet is asked again every
-// reconnect_wait until its hello is known.
+// reconnect_wait until its hello is known; without JetStream at all, the
+// hello the origin repeats on the live subject (every 10 keyframes) serves.
 #pragma once
 
 #include <atomic>
@@ -78,6 +79,7 @@ class EdgeRelay {
   bool stopping_ = false;
   std::thread worker_;
   std::atomic<std::uint64_t> rejected_subjects_{0};
+  std::uint64_t snapshot_failures_ = 0;  // worker thread only
 };
 
 }  // namespace mc::nats

@@ -79,6 +79,10 @@ void EdgeSync::apply(const Envelope& e) {
     }
     case Kind::Control:
       if (proto::control_type(e.payload, error).empty()) return reject("control: " + error);
+      if (hello_.empty()) {  // spectators get the hello first, always
+        ++stats_.held_back;
+        return;
+      }
       channel_->publish_control(std::string(e.payload));
       break;
     case Kind::Snapshot: return reject("snapshot among live messages");
@@ -184,13 +188,14 @@ void EdgeSync::check_silence(Clock::time_point now, std::chrono::milliseconds ti
 
 void EdgeSync::announce(bool lost, const std::string& detail) {
   channel_->set_feed_state(lost ? relay::FeedState::Lost : relay::FeedState::Live);
+  relay::log_event(lost ? "feed_lost" : "feed_back", channel_->name() + ": " + detail);
+  if (hello_.empty()) return;  // nothing before the hello; /metrics has the state
   proto::FeedStatus status;
   status.lost = lost;
   status.seq = last_frame_seq_;
   status.server_time_ms = unix_ms();
   status.detail = detail;
   channel_->publish_control(proto::to_json(proto::ControlMessage{status}));
-  relay::log_event(lost ? "feed_lost" : "feed_back", channel_->name() + ": " + detail);
 }
 
 void EdgeSync::reject(const std::string& why) {

@@ -7,7 +7,7 @@
 //   live overlap are dropped by envelope number);
 // - no delta whose base is missing: after a lost message (a number gap, a
 //   reconnect) deltas are held back until the next keyframe;
-// - nothing before a hello, and nothing malformed: an envelope that does not
+// - nothing before a hello (frames, events, feed messages), nothing malformed: an envelope that does not
 //   parse, a frame whose header is bad, a control that is not JSON are
 //   counted and skipped;
 // - "feed lost" / "feed back" messages (proto FeedStatus) when the NATS link

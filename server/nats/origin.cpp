@@ -54,8 +54,9 @@ void Origin::run() {
     if (ok) {
       for (auto& p : publishers_) p->republish_snapshot();
       relay::log_event("nats_stream_ready", stream_name(config_.subject_prefix));
-    } else if (!error.empty()) {
-      relay::log_event("nats_stream_failed", error);
+    } else if (!error.empty() && failures_++ % 30 == 0) {
+      relay::log_event("nats_stream_failed", error + " (is JetStream enabled? retrying; " +
+                                                 std::to_string(failures_) + " so far)");
     }
     lock.lock();
     if (ok) need_stream_ = false;

@@ -45,6 +45,7 @@ class Origin {
   std::condition_variable wake_;
   bool stopping_ = false;
   bool need_stream_ = false;
+  std::uint64_t failures_ = 0;  // worker thread only
 };
 
 }  // namespace mc::nats

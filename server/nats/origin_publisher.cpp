@@ -47,10 +47,18 @@ void OriginPublisher::send(const relay::Message& m) {
     std::string error;
     if (proto::control_type(bytes, error) == "hello") kind = Kind::Hello;
   }
+  // Every 10th keyframe goes with the hello again: an edge that joined
+  // without the keyframe stream (no JetStream) still learns it. Edges that
+  // have it ignore an identical hello.
+  if (kind == Kind::Keyframe && !hello_.empty() && ++keyframes_since_hello_ >= kHelloEveryKeyframes) {
+    keyframes_since_hello_ = 0;
+    put(live_subject_, wrap(Kind::Hello, ++number_, hello_));
+  }
   const std::uint64_t number = ++number_;
   put(live_subject_, wrap(kind, number, bytes));
   if (kind == Kind::Hello) {
     hello_ = bytes;
+    keyframes_since_hello_ = 0;
     snapshot_ = wrap_snapshot(number, hello_, {});
     put(key_subject_, snapshot_);
   } else if (kind == Kind::Keyframe && !hello_.empty()) {

@@ -2,7 +2,8 @@
 // each of its messages on NATS once, in an envelope (envelope.hpp), on
 // <prefix>.<game>.live. Each hello and each keyframe also replaces the
 // game's snapshot on <prefix>.<game>.key, which the JetStream stream keeps
-// for edges that join or come back.
+// for edges that join or come back. The hello is also repeated on the live
+// subject every 10 keyframes, for edges without the stream.
 //
 // While the NATS link is down, messages are dropped and counted, not
 // buffered: spectators want the present, and the numbers tell the edges
@@ -50,6 +51,8 @@ class OriginPublisher : public relay::Subscriber, public std::enable_shared_from
   bool stopped_ = false;
   std::uint64_t number_ = 0;
   std::string hello_;
+  static constexpr int kHelloEveryKeyframes = 10;
+  int keyframes_since_hello_ = 0;
   std::string snapshot_;  // the last snapshot sent
   std::atomic<std::uint64_t> published_{0}, dropped_{0};
 };

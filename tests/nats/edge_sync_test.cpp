@@ -111,13 +111,22 @@ TEST_F(NatsEdgeSync, AGapHoldsDeltasBackUntilTheNextKeyframe) {
   EXPECT_EQ(sync_->stats().held_back, 2u);
 }
 
-TEST_F(NatsEdgeSync, FramesBeforeAnyHelloAreHeldBack) {
+TEST_F(NatsEdgeSync, NothingBeforeAHello) {
   sync_->on_snapshot(nullptr);
   sync_->on_live(live(2, true));
   sync_->on_live(live(3, false));
+  sync_->on_live(wrap(Kind::Control, 4, R"({"type":"play_mode","seq":3,"time":1,"mode":"play_on","mode_id":3})"));
+  sync_->on_link_lost("test: link lost");
   EXPECT_TRUE(spectator_->summary().empty());
+  EXPECT_EQ(channel_->feed_state(), relay::FeedState::Lost);
   EXPECT_FALSE(sync_->has_hello());
-  EXPECT_EQ(sync_->stats().held_back, 2u);
+  EXPECT_EQ(sync_->stats().held_back, 3u);
+  // The hello, then a keyframe: the stream starts.
+  sync_->on_link_back("test: link back");
+  sync_->on_live(wrap(Kind::Hello, 5, hello_));
+  sync_->on_live(live(6, false));
+  sync_->on_live(live(7, true));
+  EXPECT_EQ(spectator_->summary(), (Seq{"H", "K107"}));
 }
 
 TEST_F(NatsEdgeSync, TheFirstHelloComesFromAnOlderSnapshotWhenLiveRanAhead) {
