@@ -286,13 +286,14 @@ int App::run_screenshot() {
   while (std::chrono::steady_clock::now() < deadline) {
     check_hello();
     if (model_ && (found = buffer_.frame_at_time(options_.at))) break;
+    if (source_->exhausted()) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   if (!found) {
     check_hello();
     const std::string why = "no frame at or after cycle " + std::to_string(options_.at) + " from " +
                             source_->describe() + (meta_.status.empty() ? "" : ": " + meta_.status);
-    std::fprintf(stderr, "matchcast-viewer: %s (waited %.0f s)\n", why.c_str(), options_.timeout_s);
+    std::fprintf(stderr, "matchcast-viewer: %s\n", why.c_str());
     // The picture says it too: what the window would show.
     target.bind();
     draw_waiting(why, options_.width, options_.height);

@@ -110,10 +110,12 @@ void RecordingSource::run() {
         if (!ok) {
           buffer_.set_status("cannot seek to " + std::to_string(pending_seek / 10) + " s: " + error);
           pending_seek = -1;
+          if (paused_) exhausted_ = true;
           continue;
         }
         pending_seek = -1;
         at_end = false;
+        exhausted_ = false;
         based = false;
         buffer_.clear_frames();
         buffer_.set_status("");

@@ -41,6 +41,7 @@ class RecordingSource : public Source {
   int attempts() const override { return attempts_.load(); }
   std::string describe() const override { return path_; }
 
+  bool exhausted() const override { return exhausted_.load(); }
   bool opened() const { return opened_.load(); }
   int current_time() const { return time_.load(); }
 
@@ -56,7 +57,7 @@ class RecordingSource : public Source {
   std::condition_variable wake_;
   bool stop_ = false;
   int seek_request_ = -1;       // guarded by mutex_
-  std::atomic<bool> paused_{false}, opened_{false};
+  std::atomic<bool> paused_{false}, opened_{false}, exhausted_{false};
   std::atomic<double> speed_{1.0};
   std::atomic<int> attempts_{0}, time_{0};
 };

@@ -38,6 +38,9 @@ class Source {
   virtual void set_speed(double /*speed*/) {}
   virtual double speed() const { return 1.0; }
   virtual bool paused() const { return false; }
+  // True when nothing more will come without a user action (a paused
+  // recording whose seek failed): --screenshot stops waiting.
+  virtual bool exhausted() const { return false; }
   // Number of connection or open attempts so far (tests watch retries).
   virtual int attempts() const = 0;
   virtual std::string describe() const = 0;

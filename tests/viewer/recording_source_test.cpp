@@ -64,6 +64,19 @@ TEST(RecordingSource, ScreenshotModeDeliversTheFrameAtATimeAndWaits) {
   source.stop();
 }
 
+TEST(RecordingSource, ASeekPastTheEndWhilePausedSaysSoAndGivesUp) {
+  FrameBuffer buffer;
+  RecordingSource source(kGolden, buffer, {.start_time = 99999, .start_paused = true, .speed = 1.0, .loop = false});
+  source.start();
+  ASSERT_TRUE(eventually([&] { return source.exhausted(); }));
+  EXPECT_NE(buffer.meta().status.find("cannot seek"), std::string::npos) << buffer.meta().status;
+  EXPECT_EQ(buffer.size(), 0u);
+  source.seek_to(3);  // a later seek that works clears it
+  ASSERT_TRUE(eventually([&] { return buffer.size() == 1u; }));
+  EXPECT_FALSE(source.exhausted());
+  source.stop();
+}
+
 TEST(RecordingSource, ACorruptFileGivesAClearMessageAndARetry) {
   const std::string path = write_file("viewer_corrupt.mcrec", std::string(5000, '\x5a'));
   FrameBuffer buffer;
