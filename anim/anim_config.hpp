@@ -2,10 +2,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string_view>
 
 namespace mc::anim {
+
+class MotionSource;  // motion_source.hpp
 
 // Levels of animation detail of the Virtual RoboCup perception study
 // (section 6): what is animated, selectable per stream.
@@ -38,6 +41,9 @@ struct AnimConfig {
   // Cycles on each side of a cycle over which the body heading is averaged
   // (zig-zags and pirouettes are softened); capped by the look-ahead.
   int heading_half_window = 2;
+  // Mocap mode (issue 9): kicks from captured motion (motion_source.hpp),
+  // shared and read-only. Null: the keyframe animation (the default).
+  std::shared_ptr<const MotionSource> motion_source;
 };
 
 }  // namespace mc::anim

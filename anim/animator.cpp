@@ -5,6 +5,7 @@
 
 #include "anim/body_frame.hpp"
 #include "anim/kick_planner.hpp"
+#include "anim/motion_source.hpp"
 #include "anim/player_animation.hpp"
 
 namespace mc::anim {
@@ -322,7 +323,12 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       if (ctx.motion_active) {
         const float tau = static_cast<float>(now - ctx.motion.contact_time_s);
         if (tau > ctx.motion.end_s + 1e-4f) ctx.motion_active = false;
-        else if (actions_on && pa.active()) sample = sample_action(ctx.motion, tau, ctx.heading, in.x, in.y);
+        else if (actions_on && pa.active()) {
+          sample = sample_action(ctx.motion, tau, ctx.heading, in.x, in.y);
+          // Mocap mode: the kicking foot and the body's swing from a captured kick.
+          if (config_.motion_source && ctx.motion.kind == MotionKind::Kick && sample.weight > 0)
+            config_.motion_source->kick(ctx.motion, tau, ctx.heading, in.x, in.y, sample);
+        }
       }
       if (sample.weight > 0) in.layer = &sample;
       if (ctx.kick_event_pending && ctx.kick_event.seq == f.seq) {

@@ -160,6 +160,9 @@ bool MocapRetargetJob::Run() {
     if (h2 < reach * reach) legs.pelvis_height = std::min(legs.pelvis_height, f.ankle_ms[1] + dims::kHipDrop + std::sqrt(reach * reach - h2));
   }
   *pelvis_height = legs.pelvis_height;
+  if (ankle_targets != nullptr)
+    for (int side = 0; side < 2; ++side)
+      for (int c = 0; c < 3; ++c) ankle_targets[3 * side + c] = legs.feet[side].ankle_ms[c];
   legs.Run();
   reached = legs.reached[0] && legs.reached[1];
   return true;

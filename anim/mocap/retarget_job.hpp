@@ -31,6 +31,8 @@ struct MocapRetargetJob {
   std::span<float> angles;          // out: human_skeleton() dofs (degrees)
   float* pelvis_height = nullptr;   // out: m above the grass
   bool reached = true;              // out: false when an ankle target was out of reach
+  float* ankle_targets = nullptr;   // out, optional: 6 floats, the ankle targets given to the IK
+                                    // (right x y z, left x y z; x/z from the pelvis, y above the grass)
 
   // False when the clip lacks the named joints, the frame is outside the
   // clip, or the outputs are missing.

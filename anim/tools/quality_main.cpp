@@ -2,7 +2,13 @@
 // of issue 4, each with its target, then writes a picture of one player's
 // kick and run.
 //
-//   matchcast-anim-quality [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...
+//   matchcast-anim-quality [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR]
+//                          [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...
+//
+// --mode mocap takes the kicks from the CMU clips (anim/motion_source.hpp);
+// --compare animates each log in both modes and prints the metrics side by
+// side (the picture then shows the mocap mode). --mocap-cache is accepted
+// for the graph walk to come and not read yet (the kicks need no graph).
 //
 // Exit status 0 when every target holds on every log, 1 otherwise, 2 on bad
 // arguments or unreadable logs.
@@ -13,7 +19,9 @@
 
 #include "anim/animator.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/mocap/io/motion_source_files.hpp"
 #include "anim/tools/metrics.hpp"
+#include "anim/tools/mode_compare.hpp"
 #include "anim/tools/strip_plot.hpp"
 #include "server/ingest/state_source.hpp"
 
@@ -124,10 +132,17 @@ int main(int argc, char** argv) {
   AnimConfig cfg;
   std::string png = "anim-quality.png";
   std::vector<std::string> logs;
+  std::string mode = "keyframe", mocap_dir = MATCHCAST_DEFAULT_MOCAP_DIR, mocap_cache = MATCHCAST_DEFAULT_MOCAP_CACHE;
+  bool compare = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--png" && i + 1 < argc) png = argv[++i];
     else if (arg == "--lookahead" && i + 1 < argc) cfg.lookahead_cycles = std::atoi(argv[++i]);
+    else if (arg == "--mode" && i + 1 < argc && (std::string(argv[i + 1]) == "keyframe" || std::string(argv[i + 1]) == "mocap"))
+      mode = argv[++i];
+    else if (arg == "--compare") compare = true;
+    else if (arg == "--mocap-dir" && i + 1 < argc) mocap_dir = argv[++i];
+    else if (arg == "--mocap-cache" && i + 1 < argc) mocap_cache = argv[++i];
     else if (arg == "--detail" && i + 1 < argc) {
       const auto d = detail_from_name(argv[++i]);
       if (!d) {
@@ -136,24 +151,47 @@ int main(int argc, char** argv) {
       }
       cfg.detail = *d;
     } else if (!arg.empty() && arg[0] == '-') {
-      std::fprintf(stderr, "usage: %s [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
       return 2;
     } else {
       logs.push_back(arg);
     }
   }
   if (logs.empty()) {
-    std::fprintf(stderr, "usage: %s [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
     return 2;
   }
+  // Mocap mode: the caller loads the clips, the animator stays pure.
+  AnimConfig mocap_cfg = cfg;
+  if (mode == "mocap" || compare) {
+    std::string err;
+    auto source = mocap::io::load_mocap_motion_source(mocap_dir, err);
+    if (!source) {
+      std::fprintf(stderr, "%s\n", err.c_str());
+      return 2;
+    }
+    std::printf("mocap mode: %zu CMU kicks from %s (cache dir %s not needed yet)\n", source->kick_count(),
+                mocap_dir.c_str(), mocap_cache.c_str());
+    mocap_cfg.motion_source = std::move(source);
+  }
+  const AnimConfig& shown_cfg = mode == "mocap" || compare ? mocap_cfg : cfg;
   bool all_ok = true, pictured = false;
   const char* trace = std::getenv("MATCHCAST_ANIM_TRACE");  // "SLOT FROM TO": per-frame dump for debugging
   for (const std::string& log : logs) {
     Animated a;
-    if (!animate_log(log, cfg, a)) return 2;
+    if (!animate_log(log, shown_cfg, a)) return 2;
     const tools::QualityReport r =
         tools::measure(human_skeleton(), a.states, a.frames, a.infos, a.events, a.params.ball_size());
-    std::printf("== %s\n%s", log.c_str(), tools::format_report(r).c_str());
+    if (compare) {
+      Animated k;
+      if (!animate_log(log, cfg, k)) return 2;
+      const tools::QualityReport rk =
+          tools::measure(human_skeleton(), k.states, k.frames, k.infos, k.events, k.params.ball_size());
+      std::printf("== %s (keyframe | mocap)\n%s", log.c_str(), tools::format_comparison(rk, r).c_str());
+      all_ok = all_ok && tools::targets_hold(rk);
+    } else {
+      std::printf("== %s%s\n%s", log.c_str(), mode == "mocap" ? " (mocap mode)" : "", tools::format_report(r).c_str());
+    }
     int counts[kActionCount] = {};
     for (const FrameInfo& fi : a.infos)
       for (const PlayerFrameInfo& p : fi.players) ++counts[static_cast<int>(p.action)];
