@@ -3,6 +3,7 @@
 // receipt) p50/p99/max per behaviour, sequence continuity, decode errors,
 // and the server's CPU and memory when given its pid.
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <boost/asio/connect.hpp>
 #include <boost/asio/io_context.hpp>
@@ -10,6 +11,7 @@
 #include <boost/beast/websocket.hpp>
 #include <boost/program_options.hpp>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <thread>
 
@@ -58,6 +60,15 @@ bool fetch_hello(const Options& o, mc::proto::Hello& hello, std::string& error) 
     error = e.what();
     return false;
   }
+}
+
+// The first three fields of /proc/loadavg: other work on the machine
+// shows in every figure above, so it is printed with them.
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
 }
 
 void raise_fd_limit() {
@@ -180,9 +191,12 @@ int main(int argc, char** argv) {
       }
     });
   if (measure) sample_process(o.server_pid, cpu_start);
+  ProcSample self_start, self_end;
+  sample_process(::getpid(), self_start);
   const auto t0 = std::chrono::steady_clock::now();
   std::this_thread::sleep_for(std::chrono::duration<double>(o.duration_s));
   if (measure) sample_process(o.server_pid, cpu_end);
+  sample_process(::getpid(), self_end);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   for (unsigned t = 0; t < o.threads; ++t)
@@ -210,6 +224,9 @@ int main(int argc, char** argv) {
                 before.rss_kb / 1024.0,
                 o.clients ? static_cast<double>(cpu_end.rss_kb - before.rss_kb) / o.clients : 0.0);
   }
+  // On one machine the clients compete with the server for the cores.
+  std::printf("loadgen  cpu %.2f cores; load average now %s\n",
+              (self_end.cpu_seconds - self_start.cpu_seconds) / seconds, load_average().c_str());
   const bool healthy_ok = total[0].failed == 0 && total[0].gaps == 0 && total[0].out_of_order == 0 &&
                           total[0].decode_errors == 0 && total[0].closed_by_server == 0;
   std::printf("healthy clients: %s\n", healthy_ok ? "no drops, no gaps, no errors" : "PROBLEMS (see above)");
