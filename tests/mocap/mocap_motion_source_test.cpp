@@ -79,6 +79,8 @@ TEST(MocapMotionSource, LeavesOtherActionsAlone) {
   ActionSample s = sample_action(m, 0, 0, 10, 5);
   const ActionSample before = s;
   EXPECT_FALSE(source()->kick(m, 0, 0, 10, 5, s));
+  m.kind = MotionKind::Kick;  // and a kick at a non-finite time
+  EXPECT_FALSE(source()->kick(m, std::nanf(""), 0, 10, 5, s));
   EXPECT_EQ(s.foot_x[0], before.foot_x[0]);
   EXPECT_EQ(s.angles, before.angles);
 }
