@@ -108,6 +108,13 @@ describe('web page against matchcast-server', { timeout: 600000 }, () => {
     assert.ok(sel, 'a player is chosen');
     await waitFor(page, () => page.isVisible('#player-card'), 'the player card', 10000);
     assert.match(await page.textContent('#pc-name'), new RegExp(`^#${sel.split(':')[1]}\\b`));
+    // The stamina bar reads the stream's "stamina" message (once a second).
+    const staminaText = await waitFor(page, async () => {
+      const t = await page.textContent('#pc-stamina-text');
+      return /^stamina \d+ \/ \d+$/.test(t) ? t : null;
+    }, 'the chosen player\'s stamina', 10000);
+    const [now, max] = staminaText.match(/\d+/g).map(Number);
+    assert.ok(now > 0 && now <= max, `stamina ${now} of ${max}`);
     await page.click('[data-camera="follow"]');
     await settle();
     await page.screenshot({ path: shot('chosen-player-follow') });
