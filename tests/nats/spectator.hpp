@@ -1,0 +1,137 @@
+// What a WebSocket spectator of the NATS tests receives, recorded on its own
+// thread with arrival times, and the checks on frame sequences.
+#pragma once
+
+#include <sys/socket.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "proto/frame_header.hpp"
+#include "tests/relay/ws_test_client.hpp"
+
+namespace mc::nats::testing {
+
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+struct Frame {
+  std::uint32_t seq = 0;
+  bool key = false;
+  std::string bytes;
+  Clock::time_point at;
+};
+
+// One spectator reading on its own thread until the connection ends.
+class Spectator {
+ public:
+  explicit Spectator(std::uint16_t port) : client_(port) {
+    thread_ = std::thread([this] {
+      try {
+        for (;;) {
+          auto m = client_.read(30s);
+          std::lock_guard lock(mutex_);
+          if (!m.binary) {
+            texts_.push_back({m.data, Clock::now(), frames_.size()});
+            continue;
+          }
+          Frame f;
+          mc::proto::FrameHeader h;
+          std::string error;
+          if (!mc::proto::peek_header(m.data, h, error)) {
+            ++bad_;
+            continue;
+          }
+          f.seq = h.seq;
+          f.key = h.keyframe;
+          f.bytes = std::move(m.data);
+          f.at = Clock::now();
+          frames_.push_back(std::move(f));
+        }
+      } catch (const std::exception&) {
+        closed_ = true;
+      }
+    });
+  }
+  ~Spectator() {
+    // Ends the reader's blocking read (shutdown(2) is safe from any thread),
+    // then waits for it: the client must outlive its reader.
+    ::shutdown(client_.stream().next_layer().native_handle(), SHUT_RDWR);
+    if (thread_.joinable()) thread_.join();
+  }
+  struct Text {
+    std::string data;
+    Clock::time_point at;
+    std::size_t frames_before;  // frames received before this message
+  };
+  std::vector<Frame> frames() {
+    std::lock_guard lock(mutex_);
+    return frames_;
+  }
+  std::vector<Text> texts() {
+    std::lock_guard lock(mutex_);
+    return texts_;
+  }
+  std::size_t frame_count() {
+    std::lock_guard lock(mutex_);
+    return frames_.size();
+  }
+  bool closed() const { return closed_; }
+  int bad() const { return bad_; }
+
+ private:
+  mc::relay::testing::WsTestClient client_;
+  std::thread thread_;
+  std::mutex mutex_;
+  std::vector<Frame> frames_;
+  std::vector<Text> texts_;
+  std::atomic<bool> closed_{false};
+  std::atomic<int> bad_{0};
+};
+
+// Waits until `pred` or `timeout`; returns pred().
+template <class Pred>
+bool eventually(Pred pred, std::chrono::milliseconds timeout) {
+  const auto deadline = Clock::now() + timeout;
+  while (!pred() && Clock::now() < deadline) std::this_thread::sleep_for(50ms);
+  return pred();
+}
+
+// Every seq from first to last present once, in order.
+inline ::testing::AssertionResult consecutive(const std::vector<Frame>& f, std::size_t from = 0) {
+  for (std::size_t i = from + 1; i < f.size(); ++i)
+    if (f[i].seq != f[i - 1].seq + 1)
+      return ::testing::AssertionFailure() << "seq " << f[i - 1].seq << " then " << f[i].seq << " (frame " << i << ")";
+  return ::testing::AssertionSuccess();
+}
+
+// What a spectator saw, for failure messages.
+inline std::string describe(Spectator& s) {
+  std::string out;
+  for (const auto& t : s.texts()) out += "[after " + std::to_string(t.frames_before) + " frames] " + t.data.substr(0, 120) + "\n";
+  const auto f = s.frames();
+  out += std::to_string(f.size()) + " frames";
+  for (std::size_t i = 1; i < f.size(); ++i)
+    if (f[i].seq != f[i - 1].seq + 1 || f[i].key)
+      out += ", #" + std::to_string(i) + " seq " + std::to_string(f[i].seq) + (f[i].key ? "K" : "D");
+  return out;
+}
+
+// A spectator that joined as its edge was syncing may get the snapshot's
+// keyframe, then (after a jump) the live stream from the next keyframe;
+// from there on everything is in sequence. True when that jump, if any, is
+// within the first `within` frames.
+inline ::testing::AssertionResult in_sequence_after_sync(const std::vector<Frame>& f, std::size_t within = 45) {
+  for (std::size_t i = 0; i < f.size() && i < within; ++i)
+    if (f[i].key && consecutive(f, i)) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "no keyframe among the first " << within
+                                       << " frames from which all is in sequence: " << consecutive(f);
+}
+
+}  // namespace mc::nats::testing
