@@ -178,6 +178,23 @@ TEST_F(TimeshiftTest, ReplayControlsSteerTheShiftOnly) {
   FAIL() << "no paused status";
 }
 
+TEST_F(TimeshiftTest, AShiftedSpectatorGetsACloseFrameOnShutdown) {
+  WsTestClient c(server_->port(), "/ws?channel=live");
+  next_frame(c);
+  c.write_text(R"({"type":"timeshift","action":"seek","time":20})");
+  EXPECT_EQ(next_timeshift(c).value("mode", ""), "replay");
+  // It no longer follows a registered channel, yet the stop reaches it.
+  std::thread stopper([&] { server_->stop(); });
+  std::uint16_t code = 0;
+  try {
+    for (int i = 0; i < 1000; ++i) c.read();
+  } catch (const boost::system::system_error& e) {
+    if (e.code() == boost::beast::websocket::error::closed) code = c.stream().reason().code;
+  }
+  stopper.join();
+  EXPECT_EQ(code, static_cast<std::uint16_t>(boost::beast::websocket::close_code::going_away));
+}
+
 TEST_F(TimeshiftTest, AnUnrecordedChannelSaysSoAndStaysLive) {
   WsTestClient c(server_->port(), "/ws?channel=unrecorded");
   EXPECT_FALSE(c.read().binary);  // hello
