@@ -25,6 +25,7 @@ testing=(
   chromium                                       # browser test (headless)
   xvfb xauth libgl1-mesa-dri                     # native viewer test (Mesa under Xvfb)
   nats-server                                    # NATS origin/edge test
+  openssl                                        # self-signed certificate for the TLS test
 )
 wanted=("${runtime[@]}")
 if [[ "${1:-}" == "--test" ]]; then wanted+=("${testing[@]}"); fi
