@@ -331,6 +331,7 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
         }
       }
       if (sample.weight > 0) in.layer = &sample;
+      in.source = config_.motion_source.get();
       if (ctx.kick_event_pending && ctx.kick_event.seq == f.seq) {
         ctx.kick_event_pending = false;
         if (events != nullptr) events->push_back(ctx.kick_event);

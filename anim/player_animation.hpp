@@ -11,12 +11,14 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 
 #include "anim/action_motion.hpp"
 #include "anim/anim_events.hpp"
 #include "anim/classifier.hpp"
 #include "anim/locomotion.hpp"
+#include "anim/motion_source.hpp"
 #include "proto/pose_frame.hpp"
 #include "proto/skeleton.hpp"
 
@@ -42,6 +44,16 @@ struct PlayerAnim {
   AnimEvent kick_event;
   Action action = Action::Stand;
   bool was_active = false;
+  // Mocap mode's slow walk (motion_source.hpp): the cursor in the captured
+  // walk, its blend weight over the keyframe gait, and its planted feet (field m).
+  WalkCursor walk;
+  float walk_w = 0;
+  bool walk_planted[2] = {false, false};
+  bool walk_lockout[2] = {false, false};  // let go mid-stance: not planted again before it lifts
+  std::uint8_t walk_since_land[2] = {255, 255};  // frames since the foot last landed (255: long ago)
+  float walk_off[2][2] = {{0, 0}, {0, 0}};  // held spot - capture's foot (body x, z): the swing starts from it
+  std::uint8_t walk_idle = 255;  // frames since the walk last showed (its cadence guard lasts 1 s)
+  float walk_foot_x[2] = {0, 0}, walk_foot_y[2] = {0, 0};
 };
 
 // Fastest turn of the body between two frames: a half turn in 0.75 s, so
@@ -63,6 +75,7 @@ struct PlayerFrameInput {
   bool animate_locomotion = true;  // detail level: false -> glide standing
   float dt = 0.05f;
   const ActionSample* layer = nullptr;  // an action layered over locomotion at this frame, or null
+  const MotionSource* source = nullptr;  // mocap mode: slow walking from its walk(), or null
 };
 
 // Writes x, y, z, heading and the angles of `out` (side, unum, state are the

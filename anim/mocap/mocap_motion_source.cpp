@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/mocap/graph_steer_job.hpp"
 #include "anim/mocap/retarget_job.hpp"
 
 namespace mc::anim::mocap {
@@ -26,6 +28,68 @@ MocapMotionSource::MocapMotionSource(std::vector<MocapClip> kicks) {
     job.pelvis_height = &pelvis;
     if (job.Validate()) kicks_.push_back(std::move(k));
   }
+}
+
+MocapMotionSource::MocapMotionSource(std::vector<MocapClip> kicks, MotionGraph graph, std::vector<MocapClip> graph_clips,
+                                     int start_node)
+    : MocapMotionSource(std::move(kicks)) {
+  graph_ = std::move(graph);
+  graph_clips_ = std::move(graph_clips);
+  bool ok = start_node >= 0 && start_node < graph_.size() && graph_clips_.size() == graph_.clip_names.size();
+  for (const GraphNode& n : graph_.nodes)
+    ok = ok && n.clip < graph_clips_.size() && n.frame >= 0 && n.frame < graph_clips_[n.clip].frames;
+  start_node_ = ok ? start_node : -1;
+}
+
+bool MocapMotionSource::walk(WalkCursor& c, float speed, float turn_deg_s, float dt, WalkPose& out) const {
+  if (start_node_ < 0 || !std::isfinite(speed) || !std::isfinite(turn_deg_s) || !(dt > 0)) return false;
+  if (c.node < 0 || c.node >= graph_.size()) {
+    c.node = start_node_;
+    c.frac = 0;
+  }
+  const float node_speed = std::max(graph_.nodes[static_cast<std::size_t>(c.node)].speed, 0.3f);
+  c.frac += dt * graph_.hz * std::clamp(speed / node_speed, 0.5f, 2.0f);
+  for (int guard = 0; c.frac >= 1 && guard < 8; ++guard) {
+    int next = -1;
+    GraphSteerJob job;
+    job.graph = &graph_;
+    job.node = c.node;
+    job.want_speed = speed;
+    job.want_turn = turn_deg_s * std::numbers::pi_v<float> / 180.0f;
+    job.next = &next;
+    if (!job.Run() || next < 0) return false;
+    c.node = next;
+    c.frac -= 1;
+  }
+  c.frac = std::clamp(c.frac, 0.0f, 0.999f);
+  const GraphNode& n = graph_.nodes[static_cast<std::size_t>(c.node)];
+  const MocapClip& clip = graph_clips_[n.clip];
+  std::array<float, dof::kCount> angles{};
+  float pelvis = 0, ankles[6] = {};
+  MocapRetargetJob job;
+  job.clip = &clip;
+  job.frame = std::min(static_cast<float>(n.frame) + c.frac, static_cast<float>(clip.frames - 1));
+  job.angles = angles;
+  job.pelvis_height = &pelvis;
+  job.ankle_targets = ankles;
+  if (!job.Run()) return false;
+  for (int i = 0; i < 2; ++i) {
+    for (int k = 0; k < 3; ++k) out.feet[i].ankle_ms[k] = ankles[3 * i + k];
+    out.feet[i].yaw_deg = 0;
+    out.feet[i].pitch_deg = 0;
+  }
+  const float low = std::min(ankles[1], ankles[4]);
+  out.planted[0] = ankles[1] < low + 0.03f;
+  out.planted[1] = ankles[4] < low + 0.03f;
+  out.pelvis_height = pelvis;
+  out.torso_lean = angles[dof::kTorso + 1];
+  out.shoulder[0] = angles[dof::kRShoulder];
+  out.shoulder[1] = angles[dof::kLShoulder];
+  out.elbow[0] = angles[dof::kRElbow];
+  out.elbow[1] = angles[dof::kLElbow];
+  for (float v : {ankles[0], ankles[1], ankles[2], ankles[3], ankles[4], ankles[5], pelvis})
+    if (!std::isfinite(v)) return false;
+  return true;
 }
 
 int MocapMotionSource::clip_for(const ActionMotion& m) const {

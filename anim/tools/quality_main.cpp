@@ -165,12 +165,12 @@ int main(int argc, char** argv) {
   AnimConfig mocap_cfg = cfg;
   if (mode == "mocap" || compare) {
     std::string err;
-    auto source = mocap::io::load_mocap_motion_source(mocap_dir, err);
+    auto source = mocap::io::load_mocap_motion_source_with_walk(mocap_dir, mocap_cache, err);
     if (!source) {
       std::fprintf(stderr, "%s\n", err.c_str());
       return 2;
     }
-    std::printf("mocap mode: %zu CMU kicks from %s (cache dir %s not needed yet)\n", source->kick_count(),
+    std::printf("mocap mode: %zu CMU kicks and the graph walk from %s (cache dir %s)\n", source->kick_count(),
                 mocap_dir.c_str(), mocap_cache.c_str());
     mocap_cfg.motion_source = std::move(source);
   }
