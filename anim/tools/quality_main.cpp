@@ -5,10 +5,10 @@
 //   matchcast-anim-quality [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR]
 //                          [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...
 //
-// --mode mocap takes the kicks from the CMU clips (anim/motion_source.hpp);
+// --mode mocap takes the kicks and slow walking from the CMU clips
+// (anim/motion_source.hpp; the motion graph is cached in --mocap-cache);
 // --compare animates each log in both modes and prints the metrics side by
-// side (the picture then shows the mocap mode). --mocap-cache is accepted
-// for the graph walk to come and not read yet (the kicks need no graph).
+// side (the picture then shows the mocap mode).
 //
 // Exit status 0 when every target holds on every log, 1 otherwise, 2 on bad
 // arguments or unreadable logs.

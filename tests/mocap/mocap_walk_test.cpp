@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,7 @@ TEST(MocapWalk, ASlowWalkIsAnimatedFromTheGraphWithinTheTargets) {
     differing += m.frames[i].players[0].angles != k.frames[i].players[0].angles;
     planted += m.infos[i].players[0].planted[0] || m.infos[i].players[0].planted[1];
   }
+  std::printf("walking frames %d: %d from the graph, %d with a foot held\n", walking, differing, planted);
   ASSERT_GT(walking, 100);
   EXPECT_GT(differing, walking * 3 / 4);  // the walk is the graph's
   EXPECT_GT(planted, walking / 2);        // and stands on its feet
