@@ -1,6 +1,7 @@
 #include "server/app/server_options.hpp"
 
 #include "anim/mocap/io/asset_cache.hpp"
+#include "anim/mocap/io/motion_source_files.hpp"
 
 #include <algorithm>
 #include <boost/program_options.hpp>
@@ -14,6 +15,36 @@
 namespace po = boost::program_options;
 
 namespace mc::app {
+namespace {
+
+// Settings given as VALUE (every channel) or CHANNEL=VALUE (one), applied in
+// order. `apply(feed, value)` returns false for a value it does not know.
+// False with `message` on a bad value or a channel this server does not have.
+template <class Apply>
+bool per_channel(const std::vector<std::string>& settings, std::vector<ChannelFeed>& feeds, const std::string& option,
+                 const std::string& values, Apply apply, std::string& message) {
+  for (const std::string& d : settings) {
+    const auto eq = d.find('=');
+    const std::string channel = eq == std::string::npos ? "" : d.substr(0, eq);
+    const std::string value = eq == std::string::npos ? d : d.substr(eq + 1);
+    bool any = false;
+    for (auto& cf : feeds) {
+      if (!channel.empty() && cf.channel != channel) continue;
+      if (!apply(cf.feed, value)) {
+        message = "matchcast-server: " + option + " must be " + values + " (or CHANNEL=VALUE), not '" + d + "'";
+        return false;
+      }
+      any = true;
+    }
+    if (!any) {
+      message = "matchcast-server: " + option + " names no channel of this server: '" + channel + "'";
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
 
 std::optional<ServerOptions> parse_server_options(int argc, const char* const argv[],
                                                   std::string& message, int& exit_code) {
@@ -26,7 +57,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   unsigned max_queue_kb = 0, stall_ms = 0;
   std::string role = "standalone", edge_games, record_at = "origin";
   unsigned nats_reconnect_ms = 0, origin_silence_ms = 0;
-  std::vector<std::string> details;
+  std::vector<std::string> details, anim_modes;
   std::string reach_channels, mocap_dir = source_dir + "/../shared/data/mocap", mocap_cache = "mocap-cache";
   po::options_description desc(
       "matchcast-server: broadcast a RoboCup 2D game as a live 3D stream\n\nOptions");
@@ -46,13 +77,16 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     ("detail", po::value(&details)->composing(),
         "animation detail none|run|kick|full (the perception study's levels), for every channel "
         "as LEVEL or for one as CHANNEL=LEVEL; repeatable (default: full)")
+    ("anim-mode", po::value(&anim_modes)->composing(),
+        "keyframe (default) or mocap: kicks and slow walking from the CMU captures of --mocap-dir; "
+        "for every channel as MODE or for one as CHANNEL=MODE; repeatable")
     ("lookahead", po::value(&feed.anim.lookahead_cycles)->default_value(feed.anim.lookahead_cycles),
         "following 10 Hz states each frame waits for, 1..4 (each adds 100 ms of delay and lengthens "
         "the kick preparation)")
     ("reach-overlay", po::value(&reach_channels),
         "channels that also send the reach map (who gets where first, from motion capture), "
         "2.5 times a second: comma-separated names or 'all' (default: none)")
-    ("mocap-dir", po::value(&mocap_dir)->default_value(mocap_dir), "the CMU clips the reach map is built from")
+    ("mocap-dir", po::value(&mocap_dir)->default_value(mocap_dir), "the CMU clips the reach map and the mocap animation mode are built from")
     ("mocap-cache", po::value(&mocap_cache)->default_value(mocap_cache),
         "folder where the built motion graph and map are cached (empty = rebuild at each start)")
     ("address", po::value(&o.relay.address)->default_value("127.0.0.1"), "address to listen on")
@@ -199,27 +233,30 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
       }
     o.feeds.push_back(cf);
   }
-  // --detail LEVEL applies to every channel, CHANNEL=LEVEL to one (later wins).
-  for (const std::string& d : details) {
-    const auto eq = d.find('=');
-    const std::string channel = eq == std::string::npos ? "" : d.substr(0, eq);
-    const auto level = anim::detail_from_name(eq == std::string::npos ? d : d.substr(eq + 1));
-    if (!level) {
-      message = "matchcast-server: --detail must be none, run, kick or full (or CHANNEL=LEVEL), not '" + d + "'";
-      exit_code = 2;
-      return std::nullopt;
-    }
-    bool any = false;
-    for (auto& cf : o.feeds)
-      if (channel.empty() || cf.channel == channel) {
-        cf.feed.anim.detail = *level;
-        any = true;
-      }
-    if (!any) {
-      message = "matchcast-server: --detail names no channel of this server: '" + channel + "'";
-      exit_code = 2;
-      return std::nullopt;
-    }
+  // --detail LEVEL / --anim-mode MODE apply to every channel, CHANNEL=... to one (later wins).
+  const bool details_ok = per_channel(details, o.feeds, "--detail", "none, run, kick or full",
+      [](FeedConfig& f, const std::string& v) {
+        const auto level = anim::detail_from_name(v);
+        if (level) f.anim.detail = *level;
+        return level.has_value();
+      }, message);
+  std::shared_ptr<const anim::MotionSource> mocap_motion;  // loaded once, shared by the channels that use it
+  std::string mocap_error;
+  const bool modes_ok = details_ok && per_channel(anim_modes, o.feeds, "--anim-mode", "keyframe or mocap",
+      [&](FeedConfig& f, const std::string& v) {
+        if (v == "keyframe") f.anim.motion_source = nullptr;
+        else if (v != "mocap") return false;
+        else {
+          if (!mocap_motion && mocap_error.empty())
+            mocap_motion = anim::mocap::io::load_mocap_motion_source_with_walk(mocap_dir, mocap_cache, mocap_error);
+          f.anim.motion_source = mocap_motion;
+        }
+        return true;
+      }, message);
+  if (!details_ok || !modes_ok || !mocap_error.empty()) {
+    if (!mocap_error.empty()) message = "matchcast-server: --anim-mode mocap: " + mocap_error;
+    exit_code = 2;
+    return std::nullopt;
   }
   if (!reach_channels.empty()) {
     std::string error;

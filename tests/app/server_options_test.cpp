@@ -41,5 +41,27 @@ TEST(ServerOptions, BadDetailOrLookaheadIsAClearError) {
   EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--lookahead", "9"}, message));
 }
 
+TEST(ServerOptions, AnimModeMocapLoadsTheCapturesOnceForTheChannelsThatAskForIt) {
+  std::string message;
+  const std::string dir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap";
+  const std::string cache = ::testing::TempDir() + "/matchcast-options-mocap-cache";
+  auto o = parse({"--rcg", "a=x.rcg", "--rcg", "b=y.rcg", "--rcg", "c=z.rcg", "--anim-mode", "mocap", "--anim-mode",
+                  "a=keyframe", "--mocap-dir", dir.c_str(), "--mocap-cache", cache.c_str()},
+                 message);
+  ASSERT_TRUE(o) << message;
+  EXPECT_EQ(o->feeds[0].feed.anim.motion_source, nullptr);
+  ASSERT_NE(o->feeds[1].feed.anim.motion_source, nullptr);
+  EXPECT_EQ(o->feeds[1].feed.anim.motion_source, o->feeds[2].feed.anim.motion_source);  // one copy
+}
+
+TEST(ServerOptions, BadAnimModeOrMissingCapturesIsAClearError) {
+  std::string message;
+  EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--anim-mode", "ballet"}, message));
+  EXPECT_NE(message.find("--anim-mode must be keyframe or mocap"), std::string::npos) << message;
+  EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--anim-mode", "mocap", "--mocap-dir", "/nonexistent/mocap"}, message));
+  EXPECT_NE(message.find("--anim-mode mocap"), std::string::npos) << message;
+  EXPECT_NE(message.find("/nonexistent/mocap"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace mc::app
