@@ -4,6 +4,8 @@
 
 #include <vector>
 
+#include "anim/animator.hpp"
+#include "anim/human_skeleton.hpp"
 #include "proto/world_state.hpp"
 
 namespace mc::anim::testing {
@@ -43,6 +45,21 @@ inline std::vector<WorldState> run_game(int n, double speed, int start = 5) {
     g.push_back(s);
   }
   return g;
+}
+
+// A whole game animated at once: frames, per-frame info and events.
+struct AnimatedGame {
+  std::vector<PoseFrame> frames;
+  std::vector<FrameInfo> infos;
+  std::vector<AnimEvent> events;
+};
+inline AnimatedGame animate_game(const std::vector<WorldState>& game, const AnimConfig& cfg = {}) {
+  AnimatedGame r;
+  Animator a(human_skeleton(), GameParams{}, cfg);
+  a.set_frame_info_sink(&r.infos);
+  for (const WorldState& s : game) a.push(s, r.frames, &r.events);
+  a.finish(r.frames, &r.events);
+  return r;
 }
 
 }  // namespace mc::anim::testing

@@ -12,22 +12,12 @@
 #include "proto/hello.hpp"
 #include "server/app/log_feed.hpp"
 #include "server/tools/feeder/feeder.hpp"
+#include "tests/relay/channel_collector.hpp"
 
 namespace mc::app {
 namespace {
 
-struct Collector : relay::Subscriber {
-  std::mutex mutex;
-  std::vector<relay::Message> messages;
-  void deliver(const relay::Message& m) override {
-    std::lock_guard lock(mutex);
-    messages.push_back(m);
-  }
-  std::vector<relay::Message> snapshot() {
-    std::lock_guard lock(mutex);
-    return messages;
-  }
-};
+using Collector = relay::testing::ChannelCollector;
 
 TEST(LiveFeed, BroadcastsAMonitorFeedAndTellsSpectatorsWhenItIsLost) {
   feeder::FeederConfig fc;

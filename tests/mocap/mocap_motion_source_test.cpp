@@ -98,20 +98,8 @@ std::vector<WorldState> kick_game(int k) {
   return g;
 }
 
-struct Animated {
-  std::vector<PoseFrame> frames;
-  std::vector<FrameInfo> infos;
-  std::vector<AnimEvent> events;
-};
-Animated animate(const std::vector<WorldState>& game, const AnimConfig& cfg) {
-  Animated r;
-  GameParams params;
-  Animator a(human_skeleton(), params, cfg);
-  a.set_frame_info_sink(&r.infos);
-  for (const WorldState& s : game) a.push(s, r.frames, &r.events);
-  a.finish(r.frames, &r.events);
-  return r;
-}
+using Animated = testing::AnimatedGame;
+constexpr auto animate = testing::animate_game;
 
 TEST(MocapMode, KickMeetsTheBallWithFiniteAnglesInsideTheLimits) {
   ASSERT_NE(source(), nullptr);

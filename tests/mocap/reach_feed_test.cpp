@@ -11,24 +11,14 @@
 
 #include "proto/control_messages.hpp"
 #include "proto/frame_header.hpp"
+#include "tests/relay/channel_collector.hpp"
 
 namespace mc::app {
 namespace {
 
 const std::string kLog = std::string(MATCHCAST_SOURCE_DIR) + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
 
-struct Collector : relay::Subscriber {
-  std::mutex mutex;
-  std::vector<relay::Message> messages;
-  void deliver(const relay::Message& m) override {
-    std::lock_guard lock(mutex);
-    messages.push_back(m);
-  }
-  std::size_t count() {
-    std::lock_guard lock(mutex);
-    return messages.size();
-  }
-};
+using Collector = relay::testing::ChannelCollector;
 
 std::shared_ptr<const anim::mocap::ReachModel> model() {
   using namespace anim::mocap;
