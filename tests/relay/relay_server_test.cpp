@@ -147,6 +147,10 @@ TEST_F(RelayServerTest, QueuedFramesGoOutTogetherInOneGatheredWrite) {
   config_.stall_timeout = std::chrono::seconds(60);
   start();
   WsTestClient c(server_->port());
+  // A small receive buffer: otherwise loopback autotuning takes megabytes,
+  // and on a loaded machine the writer can send frame after frame into it
+  // while the publishing thread waits for a core.
+  c.stream().next_layer().set_option(boost::asio::socket_base::receive_buffer_size(16 * 1024));
   EXPECT_EQ(c.read().data, R"({"type":"hello"})");
   wait_for_subscribers(1);
   // The client does not read while 12 MB are published: the kernel buffers
