@@ -54,8 +54,12 @@ void Listener::on_accept(beast::error_code ec, net::ip::tcp::socket socket) {
     // Out of file descriptors and similar: log and keep accepting.
     log_event("accept_failed", ec.message());
   } else {
+    // A live stream wants each frame on the wire now: without TCP_NODELAY,
+    // Nagle holds a message that follows another (a stamina update right
+    // after a frame) until the client's delayed ACK, up to 40 ms.
+    beast::error_code ignored;
+    socket.set_option(net::ip::tcp::no_delay(true), ignored);
     if (context_.config.socket_send_buffer > 0) {
-      beast::error_code ignored;
       socket.set_option(net::socket_base::send_buffer_size(static_cast<int>(context_.config.socket_send_buffer)),
                         ignored);
     }

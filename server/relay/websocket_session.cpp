@@ -215,29 +215,51 @@ void WebSocketSession::enqueue(Message m) {
 }
 
 void WebSocketSession::write_next() {
-  if (closing_ || !open_) {
+  // A loop, not recursion: each batch the kernel takes at once is followed
+  // by whatever queued meanwhile.
+  for (;;) {
+    writing_ = false;
     // A close frame is queued behind the write that just ended, or the
-    // session is over: nothing more goes out.
-    writing_ = false;
+    // session is over: nothing more goes out. Or Beast is writing a control
+    // frame (pong, close): the transport calls back when it is done.
+    if (closing_ || !open_ || !ws_.next_layer().can_write_raw() || queue_.empty()) return;
+    // Everything that queued during the last write goes out as one batch.
+    batch_.clear();
+    buffers_.clear();
+    queue_.take_all(batch_);
+    account_queue();
+    std::size_t total = 0;
+    for (const auto& m : batch_) {
+      buffers_.push_back(net::buffer(*m.wire));
+      total += m.wire->size();
+    }
+    writing_ = true;
+    write_started_ = std::chrono::steady_clock::now();
+    ++stats_.writes;
+    sent_inline_ = 0;
+    if (!ws_.next_layer().is_tls()) {
+      beast::error_code ec;
+      sent_inline_ = ws_.next_layer().try_write_raw(buffers_, ec);
+      if (ec && ec != net::error::would_block) {
+        writing_ = false;
+        end_session();
+        return;
+      }
+      if (sent_inline_ == total) {
+        batch_sent(total);
+        continue;
+      }
+      // The kernel took part: the rest waits for room, asynchronously.
+      std::size_t skip = sent_inline_;
+      auto first = buffers_.begin();
+      while (skip >= first->size()) skip -= (first++)->size();
+      *first += skip;
+      buffers_.erase(buffers_.begin(), first);
+    }
+    ws_.next_layer().async_write_raw(
+        buffers_, beast::bind_front_handler(&WebSocketSession::on_write, shared_from_this()));
     return;
   }
-  // Beast is writing a control frame (pong, close): the transport calls
-  // back when it is done.
-  if (!ws_.next_layer().can_write_raw() || queue_.empty()) {
-    writing_ = false;
-    return;
-  }
-  // Everything that queued during the last write goes out as one batch.
-  batch_.clear();
-  buffers_.clear();
-  queue_.take_all(batch_);
-  account_queue();
-  for (const auto& m : batch_) buffers_.push_back(net::buffer(*m.wire));
-  writing_ = true;
-  write_started_ = std::chrono::steady_clock::now();
-  ++stats_.writes;
-  ws_.next_layer().async_write_raw(
-      buffers_, beast::bind_front_handler(&WebSocketSession::on_write, shared_from_this()));
 }
 
 void WebSocketSession::on_write(beast::error_code ec, std::size_t bytes) {
@@ -246,13 +268,17 @@ void WebSocketSession::on_write(beast::error_code ec, std::size_t bytes) {
     end_session();
     return;
   }
+  batch_sent(sent_inline_ + bytes);
+  write_next();
+}
+
+void WebSocketSession::batch_sent(std::size_t bytes) {
   stats_.messages_sent += batch_.size();
   stats_.bytes_sent += bytes;
   const auto now = std::chrono::steady_clock::now();
   for (const auto& sent : batch_)
     if (sent.binary())
       stats_.record_delay(std::chrono::duration<double, std::milli>(now - sent.published).count());
-  write_next();
 }
 
 void WebSocketSession::arm_stall_check() {

@@ -73,6 +73,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   void enqueue(Message m);
   void write_next();
   void on_write(boost::beast::error_code ec, std::size_t bytes);
+  void batch_sent(std::size_t bytes);
   void arm_stall_check();
   void on_stall_check(boost::beast::error_code ec);
   void close_with(boost::beast::websocket::close_code code, const char* reason);
@@ -96,6 +97,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   SendQueue queue_;
   std::vector<Message> batch_;  // the write in flight: owns the bytes of...
   std::vector<boost::asio::const_buffer> buffers_;  // ...its gathered buffers
+  std::size_t sent_inline_ = 0;  // bytes of the batch in flight written before it went asynchronous
   std::chrono::steady_clock::time_point write_started_{};
   bool writing_ = false;
   bool open_ = false;
