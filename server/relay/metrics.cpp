@@ -34,6 +34,7 @@ std::string render_metrics(const RelayStats& s, const ChannelRegistry& channels)
   counter(o, "matchcast_connections_total", "WebSocket connections accepted", s.connections_total.load());
   counter(o, "matchcast_messages_sent_total", "WebSocket messages written", s.messages_sent.load());
   counter(o, "matchcast_writes_total", "Gathered socket writes (one per batch of messages)", s.writes.load());
+  counter(o, "matchcast_partial_writes_total", "Batches the kernel took only part of at once", s.partial_writes.load());
   counter(o, "matchcast_bytes_sent_total", "WebSocket bytes written (frames with their headers)", s.bytes_sent.load());
   counter(o, "matchcast_frames_dropped_total", "Frames skipped for slow spectators", s.frames_dropped.load());
   counter(o, "matchcast_closed_slow_total", "Spectators closed for stalling", s.closed_slow.load());

@@ -51,6 +51,9 @@ struct RelayStats {
   // Bumped on every send, by every I/O thread: sharded.
   ShardedCounter<std::uint64_t> messages_sent;
   ShardedCounter<std::uint64_t> writes;  // socket writes: one per batch of messages
+  // Batches the kernel took only part of at once (the rest waited for room):
+  // a spectator reading slower than the stream, or a burst.
+  ShardedCounter<std::uint64_t> partial_writes;
   ShardedCounter<std::uint64_t> bytes_sent;
   ShardedCounter<std::int64_t> queued_bytes;  // all spectators' send queues
   std::atomic<std::uint64_t> frames_dropped{0};

@@ -250,6 +250,7 @@ void WebSocketSession::write_next() {
         continue;
       }
       // The kernel took part: the rest waits for room, asynchronously.
+      ++stats_.partial_writes;
       std::size_t skip = sent_inline_;
       auto first = buffers_.begin();
       while (skip >= first->size()) skip -= (first++)->size();
