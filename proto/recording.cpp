@@ -1,6 +1,9 @@
 #include "proto/recording.hpp"
 
 #include <array>
+#include <utility>
+
+#include "proto/text_deflate.hpp"
 
 namespace mc::proto::rec {
 namespace {
@@ -96,9 +99,9 @@ bool parse_file_header(std::string_view bytes, FileHeader& out, std::string& err
   out.major = static_cast<std::uint8_t>(bytes[6]);
   out.minor = static_cast<std::uint8_t>(bytes[7]);
   out.created_unix_ms = get(bytes, 8, 8);
-  if (out.major != kFormatMajor) {
+  if (out.major < kOldestMajor || out.major > kFormatMajor) {
     error = "unsupported recording format major version " + std::to_string(out.major) + " (this reader reads " +
-            std::to_string(kFormatMajor) + ")";
+            std::to_string(kOldestMajor) + " to " + std::to_string(kFormatMajor) + ")";
     return false;
   }
   return true;
@@ -249,7 +252,14 @@ bool ChunkBuilder::add_frame(std::string_view frame, std::string& error) {
   return true;
 }
 
-void ChunkBuilder::add_control(std::string_view json_text) { add(ChunkEntry::Kind::Control, json_text); }
+void ChunkBuilder::add_control(std::string_view json_text) {
+  // Format 2: the entry keeps its place and length; the text goes to the
+  // chunk's deflated block.
+  body_.push_back(static_cast<char>(kEntryControl));
+  put_varint(body_, static_cast<std::uint32_t>(json_text.size()));
+  controls_.append(json_text);
+  ++entries_;
+}
 
 std::string ChunkBuilder::finish(ChunkInfo& info) {
   std::string payload;
@@ -257,15 +267,18 @@ std::string ChunkBuilder::finish(ChunkInfo& info) {
   put_chunk_info(payload, info_);
   put(payload, entries_, 4);
   payload += body_;
+  if (!controls_.empty()) payload += deflate_text(controls_);
   info = info_;
   body_.clear();
+  controls_.clear();
   entries_ = 0;
   info_ = ChunkInfo{};
   last_header_.clear();
   return encode_record(RecordType::Chunk, payload);
 }
 
-bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEntry>& entries, std::string& error) {
+bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEntry>& entries, std::string& error,
+                 std::uint8_t major) {
   entries.clear();
   if (payload.size() < kChunkHeaderSize) {
     error = "corrupt chunk: shorter than its header";
@@ -276,6 +289,11 @@ bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEnt
   std::size_t at = kChunkHeaderSize;
   std::uint32_t frames = 0;
   std::string last_header;  // of the previous frame in this chunk
+  // Format 2: the control messages' lengths, in entry order; their text
+  // follows the entries, deflated as one block.
+  const bool deflated = major >= 2;
+  std::vector<std::pair<std::size_t, std::uint32_t>> control_entries;  // entry index, length
+  std::size_t control_bytes = 0;
   for (std::uint32_t i = 0; i < count; ++i) {
     const auto bad = [&] {
       error = "corrupt chunk: bad entry " + std::to_string(i);
@@ -284,8 +302,15 @@ bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEnt
     if (at >= payload.size()) return bad();
     const auto kind = static_cast<unsigned char>(payload[at++]);
     std::uint32_t len = 0;
-    if (kind < kEntryFrame || kind > kEntryCompactFrame || !get_varint(payload, at, len) || len > payload.size() - at)
-      return bad();
+    if (kind < kEntryFrame || kind > kEntryCompactFrame || !get_varint(payload, at, len)) return bad();
+    if (kind == kEntryControl && deflated) {
+      control_bytes += len;
+      if (control_bytes > kMaxRecordPayload) return bad();
+      control_entries.emplace_back(entries.size(), len);
+      entries.push_back({ChunkEntry::Kind::Control, std::string()});
+      continue;
+    }
+    if (len > payload.size() - at) return bad();
     const std::string_view entry = payload.substr(at, len);
     at += len;
     if (kind == kEntryControl) {
@@ -305,8 +330,28 @@ bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEnt
     entries.push_back({ChunkEntry::Kind::Frame, std::move(frame)});
     ++frames;
   }
-  if (at != payload.size() || frames != info.frame_count) {
+  if (frames != info.frame_count) {
     error = "corrupt chunk: entry count does not match its contents";
+    return false;
+  }
+  if (control_bytes > 0) {
+    // DEFLATE expands at most ~1032:1: a larger claim is corruption, refused
+    // before anything is allocated for it.
+    const std::string_view block = payload.substr(at);
+    std::string text;
+    if (control_bytes > 1100 * block.size() + 64 || !inflate_text(block, control_bytes, text)) {
+      error = "corrupt chunk: its control messages do not inflate";
+      return false;
+    }
+    std::size_t from = 0;
+    for (const auto& [e, len] : control_entries) {
+      entries[e].bytes.assign(text, from, len);
+      from += len;
+    }
+    at = payload.size();
+  }
+  if (at != payload.size()) {
+    error = "corrupt chunk: bytes after its entries";
     return false;
   }
   return true;

@@ -9,8 +9,9 @@
 //   | index record | trailer (16 B)          <- only after a clean close
 //
 //   record  = u32 payload length | u8 type | payload | u32 CRC-32(type, payload)
-//   chunk   = the frames (and control messages, in stream order) of about
-//             one keyframe interval, normally starting with a keyframe
+//   chunk   = the frames (and control messages, in stream order) of at
+//             most a second; the control messages' text deflated together
+//             (format 2; format 1 kept it inline, and is still read)
 //   index   = where each chunk starts and its first frame's seq/time
 //   trailer = "MCINDEX\0" | u64 offset of the index record
 //
@@ -26,7 +27,8 @@
 
 namespace mc::proto::rec {
 
-inline constexpr std::uint8_t kFormatMajor = 1;  // readers refuse other majors
+inline constexpr std::uint8_t kFormatMajor = 2;   // what writers write
+inline constexpr std::uint8_t kOldestMajor = 1;   // readers read kOldestMajor..kFormatMajor, refuse others
 inline constexpr std::uint8_t kFormatMinor = 0;
 inline constexpr std::size_t kFileHeaderSize = 16;
 inline constexpr std::size_t kRecordOverhead = 9;   // length + type + CRC
@@ -41,7 +43,8 @@ struct FileHeader {
   std::uint64_t created_unix_ms = 0;
 };
 std::string encode_file_header(const FileHeader& header);
-// False + error for a short input, a wrong magic or an unknown major.
+// False + error for a short input, a wrong magic or a major outside
+// kOldestMajor..kFormatMajor.
 bool parse_file_header(std::string_view bytes, FileHeader& out, std::string& error);
 
 std::uint32_t crc32(std::string_view bytes, std::uint32_t crc = 0);
@@ -82,6 +85,7 @@ struct ChunkEntry {
 // header reduced to what changed since the previous frame (usually 4
 // bytes: the frames of a chunk count up by one, 50 ms apart), and restored
 // byte for byte by parse_chunk.
+// Builds a chunk of the current format (kFormatMajor).
 class ChunkBuilder {
  public:
   // `frame` must be a valid encoded frame (its header is read); false + error otherwise.
@@ -95,13 +99,16 @@ class ChunkBuilder {
  private:
   void add(ChunkEntry::Kind kind, std::string_view bytes);
   std::string body_;
+  std::string controls_;  // the control messages' text, deflated by finish()
   std::uint32_t entries_ = 0;
   ChunkInfo info_;
   std::string last_header_;  // the previous frame's header in this chunk, "" if none
 };
 
-// Parses a chunk payload; false + error when it is malformed.
-bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEntry>& entries, std::string& error);
+// Parses a chunk payload of a file of format `major`; false + error when it
+// is malformed.
+bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEntry>& entries, std::string& error,
+                 std::uint8_t major = kFormatMajor);
 
 std::string encode_index(const std::vector<ChunkInfo>& chunks);  // the index record
 bool parse_index(std::string_view payload, std::vector<ChunkInfo>& out, std::string& error);

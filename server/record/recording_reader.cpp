@@ -63,6 +63,7 @@ bool RecordingReader::open(const std::string& path, std::string& error) {
     error = path + ": " + error;
     return false;
   }
+  major_ = header.major;
   // The hello record follows the file header.
   const std::size_t hello_size = rec::record_size_hint(std::string_view(head).substr(rec::kFileHeaderSize));
   std::string hello_bytes;
@@ -128,7 +129,7 @@ bool RecordingReader::scan(std::uint64_t from, std::uint64_t file_size, std::str
     }
     if (view.type == rec::RecordType::Chunk) {
       rec::ChunkInfo info;
-      if (!rec::parse_chunk(view.payload, info, entries, err)) break;
+      if (!rec::parse_chunk(view.payload, info, entries, err, major_)) break;
       info.offset = at;
       chunks_.push_back(info);
     }
@@ -171,7 +172,7 @@ bool RecordingReader::load_chunk(std::size_t index, std::string& error) {
     return false;
   }
   rec::ChunkInfo info;
-  if (!rec::parse_chunk(view.payload, info, entries_, error)) {
+  if (!rec::parse_chunk(view.payload, info, entries_, error, major_)) {
     error = path_ + ": " + error;
     return false;
   }

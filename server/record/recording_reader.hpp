@@ -76,6 +76,7 @@ class RecordingReader {
   bool recovered_ = false;
   std::uint64_t ignored_tail_ = 0;
   std::uint64_t skipped_frames_ = 0;
+  std::uint8_t major_ = proto::rec::kFormatMajor;  // the file's format
   std::uint64_t data_start_ = 0;  // offset of the first chunk record
   std::uint64_t scan_end_ = 0;    // recovered files: where the last scan stopped
   bool finished_ = false;         // recovered files: the scan met the index

@@ -68,7 +68,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     rec::parse_record(input, v, error);
     rec::ChunkInfo info;
     std::vector<rec::ChunkEntry> entries;
-    rec::parse_chunk(input, info, entries, error);
+    rec::parse_chunk(input, info, entries, error, rec::kFormatMajor);  // control text deflated
+    rec::parse_chunk(input, info, entries, error, rec::kOldestMajor);  // control text inline
     std::vector<rec::ChunkInfo> chunks;
     rec::parse_index(input, chunks, error);
     rec::FileHeader fh;

@@ -81,6 +81,59 @@ TEST(RecordingFormat, ChunksKeepFramesAndControlsInOrder) {
     EXPECT_FALSE(parse_chunk(v.payload.substr(0, n), parsed, entries, error)) << n;
 }
 
+// Format 2 deflates a chunk's control messages together (with a preset
+// dictionary); format 1 chunks, with the text inline, still parse.
+TEST(RecordingFormat, ControlTextIsDeflatedAndFormatOneChunksStillParse) {
+  ChunkBuilder b;
+  std::string raw;
+  for (int i = 0; i < 5; ++i) {
+    const std::string m = R"({"left":[8000,7743,7498,7869,7674,0,1404,0,0,1176,0],"right":[8000,7539,7467,7480,)" +
+                          std::to_string(7000 + i) + R"(,0,3029,0,3935,2932,0],"seq":)" + std::to_string(20 * i) +
+                          R"(,"time":)" + std::to_string(10 * i) + R"(,"type":"stamina"})";
+    b.add_control(m);
+    raw += m;
+  }
+  ChunkInfo info;
+  const std::string record = b.finish(info);
+  RecordView v;
+  std::string error;
+  ASSERT_EQ(parse_record(record, v, error), RecordStatus::Ok);
+  // 5 messages of ~150 B: the dictionary and the repeats leave under a fifth.
+  EXPECT_LT(v.payload.size() * 5, raw.size()) << v.payload.size() << " of " << raw.size();
+  ChunkInfo parsed;
+  std::vector<ChunkEntry> entries;
+  ASSERT_TRUE(parse_chunk(v.payload, parsed, entries, error)) << error;
+  ASSERT_EQ(entries.size(), 5u);
+  std::string back;
+  for (const auto& e : entries) back += e.bytes;
+  EXPECT_EQ(back, raw);
+
+  // Format 1: u32 first seq | i32 time | u16 stoppage | u8 substep | u8 flags
+  // | u32 frame count | u32 entry count | kind 2, length, text.
+  std::string v1(16, '\0');
+  v1 += std::string("\x01\0\0\0", 4);
+  v1 += "\x02\x0f";
+  v1 += R"({"type":"kick"})";
+  ASSERT_TRUE(parse_chunk(v1, parsed, entries, error, 1)) << error;
+  ASSERT_EQ(entries.size(), 1u);
+  EXPECT_EQ(entries[0].bytes, R"({"type":"kick"})");
+  EXPECT_FALSE(parse_chunk(v1, parsed, entries, error, 2));  // read as format 2 it is no deflate block
+}
+
+// A chunk that claims more control text than its block could inflate to is
+// refused at once, before anything is allocated for the claim.
+TEST(RecordingFormat, AnImpossibleControlLengthIsRefused) {
+  std::string p(16, '\0');
+  p += std::string("\x01\0\0\0", 4);
+  p += "\x02\x80\x80\x80\x10";  // one control entry of 32 MiB
+  p += "abc";                      // and a 3-byte block
+  ChunkInfo info;
+  std::vector<ChunkEntry> entries;
+  std::string error;
+  EXPECT_FALSE(parse_chunk(p, info, entries, error));
+  EXPECT_NE(error.find("do not inflate"), std::string::npos) << error;
+}
+
 TEST(RecordingFormat, IndexAndTrailerRoundTrip) {
   std::vector<ChunkInfo> chunks;
   for (int i = 0; i < 5; ++i) chunks.push_back({100u + 1000u * static_cast<unsigned>(i), 20u * static_cast<unsigned>(i), 10 * i, 0, 0, true, 20});
