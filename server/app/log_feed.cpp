@@ -126,7 +126,7 @@ void LogFeed::announce_feed(bool lost, const std::string& detail) {
 void LogFeed::run() {
   do {
     if (!play_once()) return;
-    relay::log_event("feed_loop", config_.log_path);
+    relay::log_event(config_.loop && !live_ ? "feed_loop" : "feed_end", config_.log_path);
   } while (config_.loop && !live_);
   channel_->set_feed_state(relay::FeedState::Ended);
 }
