@@ -10,14 +10,21 @@
 
 using namespace mc::anim::mocap;
 
-TEST(CmuAssets, GraphAndMapFromTheRealClips) {
+namespace {
+// The graph and map of the CMU clips in shared/, from the test cache.
+bool load_real_assets(io::MocapAssets& a, std::string& error) {
   io::AssetOptions o;
   o.clips.dir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap";
   o.map.start_node = -1;
   o.cache_dir = MATCHCAST_MOCAP_CACHE;
+  return io::load_or_build_assets(o, a, error);
+}
+}  // namespace
+
+TEST(CmuAssets, GraphAndMapFromTheRealClips) {
   io::MocapAssets a;
   std::string error;
-  ASSERT_TRUE(io::load_or_build_assets(o, a, error)) << error;
+  ASSERT_TRUE(load_real_assets(a, error)) << error;
   const auto& s = a.graph.stats;
   EXPECT_GT(s.frames, 2000);                // 17 clips at 30 Hz
   EXPECT_LT(s.nodes_after, s.frames);       // pruning removed dead ends
@@ -40,7 +47,7 @@ TEST(CmuAssets, GraphAndMapFromTheRealClips) {
   EXPECT_GT(behind, 1.5f * ahead);
   // Loading again gives the same graph from the cache.
   io::MocapAssets b;
-  ASSERT_TRUE(io::load_or_build_assets(o, b, error)) << error;
+  ASSERT_TRUE(load_real_assets(b, error)) << error;
   EXPECT_TRUE(b.from_cache);
   EXPECT_EQ(b.graph.targets, a.graph.targets);
   EXPECT_EQ(b.map.cost, a.map.cost);
@@ -62,13 +69,9 @@ TEST(CmuAssets, ReachModelForTheServer) {
 }
 
 TEST(CmuAssets, SteeringTheRealGraphTurnsBothWays) {
-  io::AssetOptions o;
-  o.clips.dir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap";
-  o.map.start_node = -1;
-  o.cache_dir = MATCHCAST_MOCAP_CACHE;
   io::MocapAssets a;
   std::string error;
-  ASSERT_TRUE(io::load_or_build_assets(o, a, error)) << error;
+  ASSERT_TRUE(load_real_assets(a, error)) << error;
   for (const float want : {-0.6f, 0.6f}) {
     int node = a.map_params.start_node;
     double turned = 0;

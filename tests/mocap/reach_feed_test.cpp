@@ -11,6 +11,7 @@
 
 #include "proto/control_messages.hpp"
 #include "proto/frame_header.hpp"
+#include "tests/mocap/synthetic_reach.hpp"
 #include "tests/relay/channel_collector.hpp"
 
 namespace mc::app {
@@ -19,22 +20,6 @@ namespace {
 const std::string kLog = std::string(MATCHCAST_SOURCE_DIR) + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
 
 using Collector = relay::testing::ChannelCollector;
-
-std::shared_ptr<const anim::mocap::ReachModel> model() {
-  using namespace anim::mocap;
-  MotionGraph g;
-  GraphNode n;
-  n.fwd = 0.05f;
-  g.nodes = {n};
-  g.first_edge = {0, 1};
-  g.targets = {0};
-  g.transition = {0};
-  CapabilityParams p;
-  p.grid = MapGrid{20, 20, 0.5f, -5, -5};
-  p.iterations = 1;
-  p.max_depth = 100;
-  return std::make_shared<const ReachModel>(make_reach_model(compute_capability_map(g, p), 30));
-}
 
 // Runs the feed until `frames` frames arrived; returns what a spectator got.
 std::vector<relay::Message> run(std::shared_ptr<const anim::mocap::ReachModel> reach, std::size_t frames) {
@@ -57,7 +42,7 @@ std::vector<relay::Message> run(std::shared_ptr<const anim::mocap::ReachModel> r
 }  // namespace
 
 TEST(ReachFeed, SendsReachMapsBeforeTheirFrames) {
-  const auto messages = run(model(), 300);
+  const auto messages = run(anim::mocap::test::straight_walker_reach_model(), 300);
   int maps = 0;
   int last_time = -1;
   std::uint32_t last_frame_seq = 0;

@@ -3,26 +3,11 @@
 #include <gtest/gtest.h>
 
 #include "proto/control_messages.hpp"
+#include "tests/mocap/synthetic_reach.hpp"
 
 using namespace mc::anim::mocap;
 
 namespace {
-
-// A straight-walker map: 1.5 m/s ahead, nothing else (far field elsewhere).
-std::shared_ptr<const ReachModel> walker_model() {
-  MotionGraph g;
-  GraphNode n;
-  n.fwd = 0.05f;
-  g.nodes = {n};
-  g.first_edge = {0, 1};
-  g.targets = {0};
-  g.transition = {0};
-  CapabilityParams p;
-  p.grid = MapGrid{20, 20, 0.5f, -5, -5};
-  p.iterations = 1;
-  p.max_depth = 100;
-  return std::make_shared<const ReachModel>(make_reach_model(compute_capability_map(g, p), 30));
-}
 
 mc::WorldState two_players() {
   mc::WorldState w;
@@ -38,7 +23,7 @@ mc::WorldState two_players() {
 }  // namespace
 
 TEST(ReachMapPublisher, EveryFourthStateAMessageThatRoundTrips) {
-  ReachMapPublisher pub(walker_model(), 4);
+  ReachMapPublisher pub(test::straight_walker_reach_model(), 4);
   const mc::WorldState w = two_players();
   const mc::GameParams params;
   int sent = 0;

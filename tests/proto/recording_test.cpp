@@ -121,7 +121,8 @@ TEST(RecordingFormat, ControlTextIsDeflatedAndFormatOneChunksStillParse) {
 }
 
 // A chunk that claims more control text than its block could inflate to is
-// refused at once, before anything is allocated for the claim.
+// refused with a clear error. (That the refusal comes before any allocation
+// for the claim is parse_chunk's bound check; a test cannot see it.)
 TEST(RecordingFormat, AnImpossibleControlLengthIsRefused) {
   std::string p(16, '\0');
   p += std::string("\x01\0\0\0", 4);
