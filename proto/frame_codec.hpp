@@ -20,6 +20,7 @@
 #include "proto/frame_header.hpp"
 #include "proto/pose_frame.hpp"
 #include "proto/quantizer.hpp"
+#include "proto/range_coder.hpp"
 #include "proto/skeleton.hpp"
 
 namespace mc::proto {
@@ -41,6 +42,13 @@ class FrameEncoder {
   // must follow its base directly).
   std::string encode(const PoseFrame& frame, bool& is_keyframe);
   void force_keyframe() { force_key_ = true; }
+  // Whether the next encode() or encode_body() of `frame` makes a keyframe.
+  bool next_is_keyframe(const PoseFrame& frame) const;
+  // The body alone (what encode() puts after the header) onto an outside
+  // range coder, so that several frames share one coder and one flush (the
+  // recording's frame stream, frame_stream.hpp). `keyframe` must be
+  // next_is_keyframe(frame).
+  void encode_body(const PoseFrame& frame, bool keyframe, RangeEncoder& enc);
 
   const Quantizer& quantizer() const { return quant_; }
 
@@ -72,6 +80,12 @@ class FrameDecoder {
   // After a false return the decoder waits for the next keyframe; `out` is
   // then unspecified. Never reads outside `bytes`.
   bool decode(std::string_view bytes, PoseFrame& out, std::string& error);
+
+  // The body of the frame whose header is `h`, from an outside range
+  // decoder (the counterpart of FrameEncoder::encode_body); the same
+  // checks and errors as decode(), except the trailing-bytes check, which
+  // is the caller's.
+  bool decode_body(const FrameHeader& h, RangeDecoder& dec, PoseFrame& out, std::string& error);
 
   // True once a keyframe was decoded and no gap or error happened since.
   bool synced() const { return model_.history > 0; }

@@ -8,7 +8,7 @@ namespace {
 // The decoding side of codec_model.hpp's walk: reads each residual, adds
 // the prediction, and refuses values outside their range.
 struct DecodeIo {
-  RangeDecoder dec;
+  RangeDecoder& dec;
   std::string& error;
 
   bool corrupt(const char* what) {
@@ -51,6 +51,20 @@ FrameDecoder::FrameDecoder(const SkeletonDef& skeleton) : quant_(skeleton) {}
 bool FrameDecoder::decode(std::string_view bytes, PoseFrame& out, std::string& error) {
   FrameHeader h;
   if (!peek_header(bytes, h, error)) return false;
+  const std::string_view body = bytes.substr(kFrameHeaderSize);
+  RangeDecoder dec(body);
+  if (!decode_body(h, dec, out, error)) return false;
+  if (h.minor == kProtocolMinor && dec.consumed() != body.size()) {
+    // A newer minor version may append data; our own version must not.
+    error = "corrupt pose frame " + std::to_string(h.seq) + ": " + std::to_string(body.size() - dec.consumed()) +
+            " unexpected trailing bytes";
+    model_.history = 0;  // the frame is refused: wait for a keyframe
+    return false;
+  }
+  return true;
+}
+
+bool FrameDecoder::decode_body(const FrameHeader& h, RangeDecoder& dec, PoseFrame& out, std::string& error) {
   if (h.play_mode >= kPlayModeCount) {
     error = "corrupt pose frame: play mode " + std::to_string(h.play_mode) + " is not defined";
     model_.history = 0;
@@ -69,8 +83,7 @@ bool FrameDecoder::decode(std::string_view bytes, PoseFrame& out, std::string& e
     }
   }
 
-  const std::string_view body = bytes.substr(kFrameHeaderSize);
-  DecodeIo io{RangeDecoder(body), error};
+  DecodeIo io{dec, error};
   // Decoded in place: a refused frame leaves the model half-updated, but it
   // also sets history = 0, and the only frame accepted next is a keyframe,
   // which resets every part of the model that a delta reads.
@@ -93,11 +106,6 @@ bool FrameDecoder::decode(std::string_view bytes, PoseFrame& out, std::string& e
   }
   if (ok && io.dec.overrun()) {
     error = std::string(h.keyframe ? "keyframe " : "delta frame ") + std::to_string(h.seq) + " truncated";
-    ok = false;
-  } else if (ok && h.minor == kProtocolMinor && io.dec.consumed() != body.size()) {
-    // A newer minor version may append data; our own version must not.
-    error = "corrupt pose frame " + std::to_string(h.seq) + ": " + std::to_string(body.size() - io.dec.consumed()) +
-            " unexpected trailing bytes";
     ok = false;
   }
   if (!ok) {

@@ -8,7 +8,7 @@ namespace {
 // The encoding side of codec_model.hpp's walk: reads each value, writes its
 // residual.
 struct EncodeIo {
-  RangeEncoder enc;
+  RangeEncoder& enc;
 
   bool value(SignedModel& m, std::int32_t& v, std::int32_t pred, std::int32_t, std::int32_t, int zctx, int act,
              std::int32_t& r) {
@@ -101,11 +101,12 @@ FrameEncoder::FrameEncoder(const SkeletonDef& skeleton, EncoderOptions options)
   if (options_.keyframe_interval < 1) options_.keyframe_interval = 1;
 }
 
-std::string FrameEncoder::encode(const PoseFrame& frame, bool& is_keyframe) {
-  is_keyframe = !started_ || force_key_ || since_key_ >= options_.keyframe_interval ||
-                frame.seq != last_seq_ + 1;
-  QuantFrame q = quant_.quantize(frame);
+bool FrameEncoder::next_is_keyframe(const PoseFrame& frame) const {
+  return !started_ || force_key_ || since_key_ >= options_.keyframe_interval || frame.seq != last_seq_ + 1;
+}
 
+std::string FrameEncoder::encode(const PoseFrame& frame, bool& is_keyframe) {
+  is_keyframe = next_is_keyframe(frame);
   FrameHeader h;
   h.keyframe = is_keyframe;
   h.seq = frame.seq;
@@ -119,9 +120,16 @@ std::string FrameEncoder::encode(const PoseFrame& frame, bool& is_keyframe) {
   std::string out;
   out.reserve(kFrameHeaderSize + 512);
   write_header(h, out);
+  RangeEncoder enc;
+  encode_body(frame, is_keyframe, enc);
+  out += enc.finish();
+  return out;
+}
 
-  EncodeIo io;
-  if (is_keyframe) {
+void FrameEncoder::encode_body(const PoseFrame& frame, bool keyframe, RangeEncoder& enc) {
+  QuantFrame q = quant_.quantize(frame);
+  EncodeIo io{enc};
+  if (keyframe) {
     model_.reset_for_keyframe();
     choose_partners();
     std::uint32_t fp = quant_.fingerprint();
@@ -134,11 +142,9 @@ std::string FrameEncoder::encode(const PoseFrame& frame, bool& is_keyframe) {
     ++since_key_;
   }
   model_.push(q);
-  out += io.enc.finish();
   started_ = true;
   force_key_ = false;
   last_seq_ = frame.seq;
-  return out;
 }
 
 }  // namespace mc::proto
