@@ -31,6 +31,9 @@ struct EncoderOptions {
   int keyframe_interval = 20;
 };
 
+// The header fields of `frame` (magic and versions: this build's).
+FrameHeader header_of(const PoseFrame& frame, bool keyframe);
+
 class FrameEncoder {
  public:
   explicit FrameEncoder(const SkeletonDef& skeleton, EncoderOptions options = {});

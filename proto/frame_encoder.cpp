@@ -105,10 +105,9 @@ bool FrameEncoder::next_is_keyframe(const PoseFrame& frame) const {
   return !started_ || force_key_ || since_key_ >= options_.keyframe_interval || frame.seq != last_seq_ + 1;
 }
 
-std::string FrameEncoder::encode(const PoseFrame& frame, bool& is_keyframe) {
-  is_keyframe = next_is_keyframe(frame);
+FrameHeader header_of(const PoseFrame& frame, bool keyframe) {
   FrameHeader h;
-  h.keyframe = is_keyframe;
+  h.keyframe = keyframe;
   h.seq = frame.seq;
   h.time = frame.time;
   h.stoppage = frame.stoppage;
@@ -117,6 +116,12 @@ std::string FrameEncoder::encode(const PoseFrame& frame, bool& is_keyframe) {
   h.score_left = frame.score_left;
   h.score_right = frame.score_right;
   h.server_time_ms = frame.server_time_ms;
+  return h;
+}
+
+std::string FrameEncoder::encode(const PoseFrame& frame, bool& is_keyframe) {
+  is_keyframe = next_is_keyframe(frame);
+  const FrameHeader h = header_of(frame, is_keyframe);
   std::string out;
   out.reserve(kFrameHeaderSize + 512);
   write_header(h, out);

@@ -3,6 +3,7 @@
 #include <array>
 #include <utility>
 
+#include "proto/control_binary.hpp"
 #include "proto/text_deflate.hpp"
 
 namespace mc::proto::rec {
@@ -40,14 +41,9 @@ bool get_varint(std::string_view in, std::size_t& at, std::uint32_t& v) {
   return false;
 }
 
-void put_chunk_info(std::string& out, const ChunkInfo& c) {
-  put(out, c.first_seq, 4);
-  put(out, static_cast<std::uint32_t>(c.first_time), 4);
-  put(out, static_cast<std::uint16_t>(c.first_stoppage), 2);
-  put(out, c.first_substep, 1);
-  put(out, c.starts_with_keyframe ? 1u : 0u, 1);
-  put(out, c.frame_count, 4);
-}
+// Formats 1 and 2 (read only): the chunk info in 16 fixed bytes, u32 first
+// seq | i32 first time | u16 first stoppage | u8 first substep | u8 flags |
+// u32 frame count.
 void get_chunk_info(std::string_view in, std::size_t at, ChunkInfo& c) {
   c.first_seq = static_cast<std::uint32_t>(get(in, at, 4));
   c.first_time = static_cast<int>(static_cast<std::int32_t>(get(in, at + 4, 4)));
@@ -55,6 +51,42 @@ void get_chunk_info(std::string_view in, std::size_t at, ChunkInfo& c) {
   c.first_substep = static_cast<std::uint8_t>(get(in, at + 10, 1));
   c.starts_with_keyframe = (get(in, at + 11, 1) & 1u) != 0;
   c.frame_count = static_cast<std::uint32_t>(get(in, at + 12, 4));
+}
+
+std::uint32_t zigzag(std::int32_t v) {
+  return v >= 0 ? static_cast<std::uint32_t>(v) << 1 : (static_cast<std::uint32_t>(-(v + 1)) << 1) | 1u;
+}
+std::int32_t unzigzag(std::uint32_t u) {
+  return (u & 1u) ? -static_cast<std::int32_t>(u >> 1) - 1 : static_cast<std::int32_t>(u >> 1);
+}
+
+// Format 3: the chunk info in LEB128 numbers, each against `base` (the
+// previous chunk's info in the index; zero in a chunk's own header):
+// seq change (zigzag, mod 2^32) | time change (zigzag) | stoppage | u8 flags
+// (bit 0 keyframe) | u8 substep | frame count. ~8 bytes instead of 16.
+void put_chunk_info_v3(std::string& out, const ChunkInfo& c, const ChunkInfo& base) {
+  put_varint(out, zigzag(static_cast<std::int32_t>(c.first_seq - base.first_seq)));
+  put_varint(out, zigzag(static_cast<std::int32_t>(static_cast<std::uint32_t>(c.first_time) - static_cast<std::uint32_t>(base.first_time))));
+  put_varint(out, static_cast<std::uint32_t>(c.first_stoppage));
+  out.push_back(static_cast<char>(c.starts_with_keyframe ? 1 : 0));
+  out.push_back(static_cast<char>(c.first_substep));
+  put_varint(out, c.frame_count);
+}
+bool get_chunk_info_v3(std::string_view in, std::size_t& at, ChunkInfo& c, const ChunkInfo& base) {
+  std::uint32_t seq = 0, time = 0, stoppage = 0;
+  if (!get_varint(in, at, seq) || !get_varint(in, at, time) || !get_varint(in, at, stoppage) || stoppage > 65535 ||
+      in.size() - at < 2)
+    return false;
+  const auto flags = static_cast<unsigned char>(in[at]);
+  c.first_substep = static_cast<std::uint8_t>(in[at + 1]);
+  at += 2;
+  if (flags > 1 || !get_varint(in, at, c.frame_count)) return false;
+  c.first_seq = base.first_seq + static_cast<std::uint32_t>(unzigzag(seq));
+  c.first_time = static_cast<int>(static_cast<std::int32_t>(static_cast<std::uint32_t>(base.first_time) +
+                                                            static_cast<std::uint32_t>(unzigzag(time))));
+  c.first_stoppage = static_cast<int>(stoppage);
+  c.starts_with_keyframe = flags == 1;
+  return true;
 }
 
 const std::array<std::uint32_t, 256>& crc_table() {
@@ -155,8 +187,11 @@ RecordStatus parse_record(std::string_view bytes, RecordView& out, std::string& 
 namespace {
 
 // Entry kinds on disk: 1 whole frame, 2 control message, 3 frame whose header
-// is coded against the previous frame of the chunk.
-constexpr std::uint8_t kEntryFrame = 1, kEntryControl = 2, kEntryCompactFrame = 3;
+// is coded against the previous frame of the chunk, 4 (format 3) a run of
+// frames in the chunk's frame stream (LEB128 count instead of a length), 5
+// (format 3) a control message in binary form (control_binary.hpp).
+constexpr std::uint8_t kEntryFrame = 1, kEntryControl = 2, kEntryCompactFrame = 3, kEntryStreamRun = 4,
+                       kEntryBinaryControl = 5;
 
 // Compact header: u8 flags (bit 0 keyframe, bit 1 substep, bit 2 seq given,
 // bit 3 play mode and score given), varint zigzag time change, varint
@@ -227,9 +262,7 @@ void ChunkBuilder::add(ChunkEntry::Kind kind, std::string_view bytes) {
   ++entries_;
 }
 
-bool ChunkBuilder::add_frame(std::string_view frame, std::string& error) {
-  FrameHeader h;
-  if (!peek_header(frame, h, error)) return false;
+void ChunkBuilder::note_first(const FrameHeader& h) {
   if (info_.frame_count == 0) {
     info_.first_seq = h.seq;
     info_.first_time = h.time;
@@ -238,6 +271,12 @@ bool ChunkBuilder::add_frame(std::string_view frame, std::string& error) {
     info_.starts_with_keyframe = h.keyframe;
   }
   ++info_.frame_count;
+}
+
+bool ChunkBuilder::add_frame(std::string_view frame, std::string& error) {
+  FrameHeader h;
+  if (!peek_header(frame, h, error)) return false;
+  note_first(h);
   const std::string compact = last_header_.empty() ? std::string() : compact_header(last_header_, frame);
   last_header_.assign(frame.substr(0, kFrameHeaderSize));
   if (compact.empty()) {
@@ -252,22 +291,46 @@ bool ChunkBuilder::add_frame(std::string_view frame, std::string& error) {
   return true;
 }
 
+void ChunkBuilder::add_stream_frame(const FrameHeader& header) {
+  note_first(header);
+  ++stream_run_;
+}
+
+void ChunkBuilder::end_stream_run() {
+  if (stream_run_ == 0) return;
+  body_.push_back(static_cast<char>(kEntryStreamRun));
+  put_varint(body_, stream_run_);
+  ++entries_;
+  stream_run_ = 0;
+}
+
 void ChunkBuilder::add_control(std::string_view json_text) {
   // Format 2: the entry keeps its place and length; the text goes to the
   // chunk's deflated block.
-  body_.push_back(static_cast<char>(kEntryControl));
-  put_varint(body_, static_cast<std::uint32_t>(json_text.size()));
-  controls_.append(json_text);
+  // Format 3: a stamina update or a kick in binary form, in the same block.
+  end_stream_run();
+  const std::string binary = compact_control(json_text);
+  const std::string_view stored = binary.empty() ? json_text : std::string_view(binary);
+  body_.push_back(static_cast<char>(binary.empty() ? kEntryControl : kEntryBinaryControl));
+  put_varint(body_, static_cast<std::uint32_t>(stored.size()));
+  controls_.append(stored);
   ++entries_;
 }
 
-std::string ChunkBuilder::finish(ChunkInfo& info) {
+std::string ChunkBuilder::finish(ChunkInfo& info, std::string_view frame_stream) {
+  end_stream_run();
   std::string payload;
-  payload.reserve(kChunkHeaderSize + body_.size());
-  put_chunk_info(payload, info_);
-  put(payload, entries_, 4);
+  payload.reserve(kChunkHeaderSize + body_.size() + frame_stream.size() + 16);
+  put_chunk_info_v3(payload, info_, ChunkInfo{});
+  put_varint(payload, entries_);
   payload += body_;
-  if (!controls_.empty()) payload += deflate_text(controls_);
+  if (!controls_.empty()) {
+    // Format 3: the block's length, since the frame stream follows it.
+    const std::string block = deflate_text(controls_);
+    put_varint(payload, static_cast<std::uint32_t>(block.size()));
+    payload += block;
+  }
+  payload.append(frame_stream);
   info = info_;
   body_.clear();
   controls_.clear();
@@ -278,22 +341,35 @@ std::string ChunkBuilder::finish(ChunkInfo& info) {
 }
 
 bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEntry>& entries, std::string& error,
-                 std::uint8_t major) {
+                 std::uint8_t major, std::string_view* frame_stream) {
   entries.clear();
-  if (payload.size() < kChunkHeaderSize) {
-    error = "corrupt chunk: shorter than its header";
-    return false;
-  }
-  get_chunk_info(payload, 0, info);
-  const auto count = static_cast<std::uint32_t>(get(payload, 16, 4));
+  if (frame_stream) *frame_stream = {};
   std::size_t at = kChunkHeaderSize;
+  std::uint32_t count = 0;
+  if (major >= 3) {
+    at = 0;
+    info = ChunkInfo{};
+    if (!get_chunk_info_v3(payload, at, info, ChunkInfo{}) || !get_varint(payload, at, count)) {
+      error = "corrupt chunk: bad header";
+      return false;
+    }
+  } else {
+    if (payload.size() < kChunkHeaderSize) {
+      error = "corrupt chunk: shorter than its header";
+      return false;
+    }
+    get_chunk_info(payload, 0, info);
+    count = static_cast<std::uint32_t>(get(payload, 16, 4));
+  }
   std::uint32_t frames = 0;
   std::string last_header;  // of the previous frame in this chunk
   // Format 2: the control messages' lengths, in entry order; their text
   // follows the entries, deflated as one block.
   const bool deflated = major >= 2;
   std::vector<std::pair<std::size_t, std::uint32_t>> control_entries;  // entry index, length
+  std::vector<bool> binary_entries;  // per control entry: stored in binary form (format 3)
   std::size_t control_bytes = 0;
+  std::uint32_t stream_frames = 0;
   for (std::uint32_t i = 0; i < count; ++i) {
     const auto bad = [&] {
       error = "corrupt chunk: bad entry " + std::to_string(i);
@@ -302,11 +378,23 @@ bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEnt
     if (at >= payload.size()) return bad();
     const auto kind = static_cast<unsigned char>(payload[at++]);
     std::uint32_t len = 0;
-    if (kind < kEntryFrame || kind > kEntryCompactFrame || !get_varint(payload, at, len)) return bad();
-    if (kind == kEntryControl && deflated) {
+    const unsigned char last_kind = major >= 3 ? kEntryBinaryControl : kEntryCompactFrame;
+    if (kind < kEntryFrame || kind > last_kind || !get_varint(payload, at, len)) return bad();
+    if (kind == kEntryStreamRun) {
+      // A hostile count allocates nothing: the chunk's own frame count
+      // (itself bounded) must cover it.
+      if (len == 0 || info.frame_count > kMaxChunkFrames || frames > info.frame_count || len > info.frame_count - frames)
+        return bad();
+      entries.insert(entries.end(), len, ChunkEntry{ChunkEntry::Kind::StreamFrame, std::string()});
+      frames += len;
+      stream_frames += len;
+      continue;
+    }
+    if ((kind == kEntryControl || kind == kEntryBinaryControl) && deflated) {
       control_bytes += len;
       if (control_bytes > kMaxRecordPayload) return bad();
       control_entries.emplace_back(entries.size(), len);
+      binary_entries.push_back(kind == kEntryBinaryControl);
       entries.push_back({ChunkEntry::Kind::Control, std::string()});
       continue;
     }
@@ -337,17 +425,41 @@ bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEnt
   if (control_bytes > 0) {
     // DEFLATE expands at most ~1032:1: a larger claim is corruption, refused
     // before anything is allocated for it.
-    const std::string_view block = payload.substr(at);
+    std::string_view block = payload.substr(at);
+    if (major >= 3) {
+      std::uint32_t size = 0;
+      if (!get_varint(payload, at, size) || size > payload.size() - at) {
+        error = "corrupt chunk: bad control block length";
+        return false;
+      }
+      block = payload.substr(at, size);
+    }
     std::string text;
     if (control_bytes > 1100 * block.size() + 64 || !inflate_text(block, control_bytes, text)) {
       error = "corrupt chunk: its control messages do not inflate";
       return false;
     }
     std::size_t from = 0;
-    for (const auto& [e, len] : control_entries) {
-      entries[e].bytes.assign(text, from, len);
+    for (std::size_t i = 0; i < control_entries.size(); ++i) {
+      const auto [e, len] = control_entries[i];
+      if (!binary_entries[i]) {
+        entries[e].bytes.assign(text, from, len);
+      } else if (!expand_control(std::string_view(text).substr(from, len), entries[e].bytes)) {
+        error = "corrupt chunk: a control message in binary form does not decode";
+        return false;
+      }
       from += len;
     }
+    at += block.size();
+    if (major < 3) at = payload.size();
+  }
+  if (stream_frames > 0) {
+    // Format 3: the frame stream, to the end of the payload.
+    if (at >= payload.size()) {
+      error = "corrupt chunk: its frame stream is missing";
+      return false;
+    }
+    if (frame_stream) *frame_stream = payload.substr(at);
     at = payload.size();
   }
   if (at != payload.size()) {
@@ -358,28 +470,81 @@ bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEnt
 }
 
 std::string encode_index(const std::vector<ChunkInfo>& chunks) {
+  // Format 3: u32 count, then per chunk the LEB128 change of its offset and
+  // its info against the previous chunk's (~9 bytes instead of 24).
   std::string payload;
-  payload.reserve(4 + chunks.size() * kIndexEntrySize);
+  payload.reserve(4 + chunks.size() * 10);
   put(payload, chunks.size(), 4);
+  ChunkInfo prev;
   for (const auto& c : chunks) {
-    put(payload, c.offset, 8);
-    put_chunk_info(payload, c);
+    const std::uint64_t step = c.offset - prev.offset;
+    put_varint(payload, static_cast<std::uint32_t>(step & 0xffffffffu));
+    put_varint(payload, static_cast<std::uint32_t>(step >> 32));
+    put_chunk_info_v3(payload, c, prev);
+    prev = c;
   }
   return encode_record(RecordType::Index, payload);
 }
 
-bool parse_index(std::string_view payload, std::vector<ChunkInfo>& out, std::string& error) {
+bool parse_index(std::string_view payload, std::vector<ChunkInfo>& out, std::string& error, std::uint8_t major) {
   out.clear();
-  if (payload.size() < 4 || (payload.size() - 4) % kIndexEntrySize != 0 ||
-      get(payload, 0, 4) != (payload.size() - 4) / kIndexEntrySize) {
+  const auto bad = [&] {
+    out.clear();
     error = "corrupt index: size does not match its count";
     return false;
+  };
+  if (payload.size() < 4) return bad();
+  const std::uint64_t count = get(payload, 0, 4);
+  if (major < 3) {
+    if ((payload.size() - 4) % kIndexEntrySize != 0 || count != (payload.size() - 4) / kIndexEntrySize) return bad();
+    for (std::size_t at = 4; at < payload.size(); at += kIndexEntrySize) {
+      ChunkInfo c;
+      c.offset = get(payload, at, 8);
+      get_chunk_info(payload, at + 8, c);
+      out.push_back(c);
+    }
+    return true;
   }
-  for (std::size_t at = 4; at < payload.size(); at += kIndexEntrySize) {
+  // An entry takes at least 7 bytes: a hostile count allocates nothing.
+  if (count > (payload.size() - 4) / 7) return bad();
+  out.reserve(static_cast<std::size_t>(count));
+  std::size_t at = 4;
+  ChunkInfo prev;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::uint32_t lo = 0, hi = 0;
     ChunkInfo c;
-    c.offset = get(payload, at, 8);
-    get_chunk_info(payload, at + 8, c);
+    if (!get_varint(payload, at, lo) || !get_varint(payload, at, hi) || !get_chunk_info_v3(payload, at, c, prev))
+      return bad();
+    c.offset = prev.offset + ((static_cast<std::uint64_t>(hi) << 32) | lo);
     out.push_back(c);
+    prev = c;
+  }
+  if (at != payload.size()) return bad();
+  return true;
+}
+
+std::string encode_hello(std::string_view json_text) {
+  // Format 3: u32 text length | the text deflated (text_deflate.hpp).
+  std::string payload;
+  put(payload, json_text.size(), 4);
+  payload += deflate_text(json_text);
+  return payload;
+}
+
+bool parse_hello(std::string_view payload, std::string& json_text, std::string& error, std::uint8_t major) {
+  if (major < 3) {
+    json_text.assign(payload);
+    return true;
+  }
+  if (payload.size() < 4) {
+    error = "corrupt hello record: shorter than its header";
+    return false;
+  }
+  const std::uint64_t size = get(payload, 0, 4);
+  const std::string_view block = payload.substr(4);
+  if (size > 1100 * block.size() + 64 || !inflate_text(block, static_cast<std::size_t>(size), json_text)) {
+    error = "corrupt hello record: its text does not inflate";
+    return false;
   }
   return true;
 }

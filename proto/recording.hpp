@@ -9,9 +9,12 @@
 //   | index record | trailer (16 B)          <- only after a clean close
 //
 //   record  = u32 payload length | u8 type | payload | u32 CRC-32(type, payload)
+//   hello   = the hello JSON (format 3: deflated)
 //   chunk   = the frames (and control messages, in stream order) of at
 //             most a second; the control messages' text deflated together
-//             (format 2; format 1 kept it inline, and is still read)
+//             (format 2; format 1 kept it inline, and is still read); the
+//             frames as one range-coded stream (format 3, frame_stream.hpp;
+//             formats 1 and 2 kept each frame's own bytes, still read)
 //   index   = where each chunk starts and its first frame's seq/time
 //   trailer = "MCINDEX\0" | u64 offset of the index record
 //
@@ -27,7 +30,7 @@
 
 namespace mc::proto::rec {
 
-inline constexpr std::uint8_t kFormatMajor = 2;   // what writers write
+inline constexpr std::uint8_t kFormatMajor = 3;   // what writers write
 inline constexpr std::uint8_t kOldestMajor = 1;   // readers read kOldestMajor..kFormatMajor, refuse others
 inline constexpr std::uint8_t kFormatMinor = 0;
 inline constexpr std::size_t kFileHeaderSize = 16;
@@ -35,6 +38,9 @@ inline constexpr std::size_t kRecordOverhead = 9;   // length + type + CRC
 inline constexpr std::size_t kTrailerSize = 16;
 // A record longer than this is corruption (a chunk of 1 s is ~10 KB).
 inline constexpr std::uint32_t kMaxRecordPayload = 64u << 20;
+// More frames than this in one chunk is corruption (a writer cuts a chunk
+// every second; this is an hour at 20 Hz): a reader allocates nothing for more.
+inline constexpr std::uint32_t kMaxChunkFrames = 72000;
 
 enum class RecordType : std::uint8_t { Hello = 1, Chunk = 2, Index = 3 };
 
@@ -76,8 +82,11 @@ struct ChunkInfo {
 };
 
 struct ChunkEntry {
-  enum class Kind : std::uint8_t { Frame = 1, Control = 2 } kind = Kind::Frame;
-  std::string bytes;  // an encoded pose frame (header restored), or a JSON control message
+  // Frame: an encoded pose frame (header restored) in `bytes`. Control: a
+  // JSON control message in `bytes`. StreamFrame: the next frame of the
+  // chunk's frame stream (format 3; `bytes` empty, see frame_stream.hpp).
+  enum class Kind : std::uint8_t { Frame = 1, Control = 2, StreamFrame = 3 } kind = Kind::Frame;
+  std::string bytes;
 };
 
 // Collects one chunk. Frames and control messages keep their order. The
@@ -90,28 +99,43 @@ class ChunkBuilder {
  public:
   // `frame` must be a valid encoded frame (its header is read); false + error otherwise.
   bool add_frame(std::string_view frame, std::string& error);
+  // A frame that went into the chunk's frame stream (FrameStreamEncoder),
+  // with the header the stream coded. A chunk holds stream frames or
+  // encoded frames, not both.
+  void add_stream_frame(const FrameHeader& header);
   void add_control(std::string_view json_text);
-  bool empty() const { return entries_ == 0; }
+  bool empty() const { return entries_ == 0 && stream_run_ == 0; }
   std::uint32_t frame_count() const { return info_.frame_count; }
   // The chunk record (offset in `info` is left to the caller), and a reset.
-  std::string finish(ChunkInfo& info);
+  // `frame_stream`: the stream's bytes when stream frames were added.
+  std::string finish(ChunkInfo& info, std::string_view frame_stream = {});
 
  private:
   void add(ChunkEntry::Kind kind, std::string_view bytes);
+  void note_first(const FrameHeader& h);
+  void end_stream_run();
   std::string body_;
   std::string controls_;  // the control messages' text, deflated by finish()
   std::uint32_t entries_ = 0;
   ChunkInfo info_;
   std::string last_header_;  // the previous frame's header in this chunk, "" if none
+  std::uint32_t stream_run_ = 0;  // stream frames since the last entry written
 };
 
 // Parses a chunk payload of a file of format `major`; false + error when it
-// is malformed.
+// is malformed. `frame_stream` (format 3) receives the bytes of the chunk's
+// frame stream, a view into `payload`, empty when it has no stream frames.
 bool parse_chunk(std::string_view payload, ChunkInfo& info, std::vector<ChunkEntry>& entries, std::string& error,
-                 std::uint8_t major = kFormatMajor);
+                 std::uint8_t major = kFormatMajor, std::string_view* frame_stream = nullptr);
 
-std::string encode_index(const std::vector<ChunkInfo>& chunks);  // the index record
-bool parse_index(std::string_view payload, std::vector<ChunkInfo>& out, std::string& error);
+std::string encode_index(const std::vector<ChunkInfo>& chunks);  // the index record (current format)
+bool parse_index(std::string_view payload, std::vector<ChunkInfo>& out, std::string& error,
+                 std::uint8_t major = kFormatMajor);
+// The hello record's payload (current format: the JSON text deflated), and
+// the JSON text back from a file of format `major`.
+std::string encode_hello(std::string_view json_text);
+bool parse_hello(std::string_view payload, std::string& json_text, std::string& error,
+                 std::uint8_t major = kFormatMajor);
 std::string encode_trailer(std::uint64_t index_offset);
 // False when the last 16 bytes of a file are not a trailer.
 bool parse_trailer(std::string_view last16, std::uint64_t& index_offset);

@@ -13,7 +13,7 @@
 
 namespace mc::proto::rec {
 
-// The dictionary is part of recording format 2: never change it.
+// The dictionary is part of recording formats 2 and 3: never change it.
 std::string_view control_dictionary();
 
 std::string deflate_text(std::string_view text);

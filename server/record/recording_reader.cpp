@@ -35,6 +35,7 @@ bool RecordingReader::read_at(std::uint64_t offset, std::size_t size, std::strin
 bool RecordingReader::open(const std::string& path, std::string& error) {
   if (fd_ >= 0) ::close(fd_);
   hello_json_.clear();
+  stream_.reset();  // it holds a reference to the decoder
   decoder_.reset();
   chunks_.clear();
   recovered_ = false;
@@ -74,8 +75,7 @@ bool RecordingReader::open(const std::string& path, std::string& error) {
     error = path + ": no valid hello record" + (error.empty() ? "" : " (" + error + ")");
     return false;
   }
-  hello_json_ = std::string(view.payload);
-  if (!proto::hello_from_json(hello_json_, hello_, error)) {
+  if (!rec::parse_hello(view.payload, hello_json_, error, major_) || !proto::hello_from_json(hello_json_, hello_, error)) {
     error = path + ": " + error;
     return false;
   }
@@ -103,7 +103,7 @@ bool RecordingReader::load_index(std::uint64_t file_size) {
   rec::RecordView view;
   std::vector<rec::ChunkInfo> chunks;
   if (rec::parse_record(bytes, view, err) != rec::RecordStatus::Ok || view.type != rec::RecordType::Index ||
-      view.total_size != bytes.size() || !rec::parse_index(view.payload, chunks, err))
+      view.total_size != bytes.size() || !rec::parse_index(view.payload, chunks, err, major_))
     return false;
   for (const auto& c : chunks)
     if (c.offset < data_start_ || c.offset >= index_offset) return false;
@@ -172,9 +172,17 @@ bool RecordingReader::load_chunk(std::size_t index, std::string& error) {
     return false;
   }
   rec::ChunkInfo info;
-  if (!rec::parse_chunk(view.payload, info, entries_, error, major_)) {
+  std::string_view frame_stream;
+  stream_.reset();
+  if (!rec::parse_chunk(view.payload, info, entries_, error, major_, &frame_stream)) {
     error = path_ + ": " + error;
     return false;
+  }
+  if (!frame_stream.empty()) {
+    std::uint32_t frames = 0;
+    for (const auto& e : entries_) frames += e.kind == rec::ChunkEntry::Kind::StreamFrame ? 1u : 0u;
+    stream_.emplace(*decoder_, frame_stream,
+                    proto::StreamStart{info.first_seq, info.first_time, info.first_stoppage, info.first_substep}, frames);
   }
   chunk_ = index;
   chunk_loaded_ = true;
@@ -204,6 +212,16 @@ bool RecordingReader::next(PoseFrame& out, std::string& error, std::vector<std::
     const rec::ChunkEntry& e = entries_[entry_++];
     if (e.kind == rec::ChunkEntry::Kind::Control) {
       if (controls) controls->emplace_back(e.bytes);
+      continue;
+    }
+    if (e.kind == rec::ChunkEntry::Kind::StreamFrame) {
+      if (stream_ && stream_->next(out, error)) return true;
+      // The rest of this chunk's stream cannot be found: skip it, and wait
+      // for a keyframe, as a live client would.
+      stream_.reset();
+      *decoder_ = proto::FrameDecoder(hello_.skeleton);
+      ++skipped_frames_;
+      error.clear();
       continue;
     }
     if (decoder_->decode(e.bytes, out, error)) return true;

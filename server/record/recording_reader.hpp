@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "proto/frame_codec.hpp"
+#include "proto/frame_stream.hpp"
 #include "proto/hello.hpp"
 #include "proto/recording.hpp"
 
@@ -87,6 +88,9 @@ class RecordingReader {
   std::string chunk_bytes_;
   std::vector<proto::rec::ChunkEntry> entries_;
   std::size_t entry_ = 0;
+  // Format 3: the loaded chunk's frame stream (a view into chunk_bytes_);
+  // empty after a frame of it failed, since the rest cannot be found then.
+  std::optional<proto::FrameStreamDecoder> stream_;
 };
 
 }  // namespace mc::record

@@ -33,6 +33,7 @@ bool RecordingWriter::open(const std::string& path, std::string_view hello_json,
   offset_ = 0;
   skipped_ = 0;
   index_.clear();
+  stream_.reset();
   decoder_.reset();
   encoder_.reset();
   if (options_.keyframe_interval > 0) {
@@ -45,6 +46,7 @@ bool RecordingWriter::open(const std::string& path, std::string_view hello_json,
     }
     decoder_ = std::make_unique<proto::FrameDecoder>(hello.skeleton);
     encoder_ = std::make_unique<proto::FrameEncoder>(hello.skeleton, proto::EncoderOptions{options_.keyframe_interval});
+    stream_ = std::make_unique<proto::FrameStreamEncoder>(*encoder_);
   }
   proto::rec::FileHeader header;
   header.created_unix_ms = options_.created_unix_ms != 0
@@ -53,7 +55,7 @@ bool RecordingWriter::open(const std::string& path, std::string_view hello_json,
                                                                 std::chrono::system_clock::now().time_since_epoch())
                                                                 .count());
   return write_all(proto::rec::encode_file_header(header) +
-                       proto::rec::encode_record(proto::rec::RecordType::Hello, hello_json),
+                       proto::rec::encode_record(proto::rec::RecordType::Hello, proto::rec::encode_hello(hello_json)),
                    error);
 }
 
@@ -80,7 +82,7 @@ bool RecordingWriter::flush(std::string& error) {
   }
   if (chunk_.empty()) return true;
   proto::rec::ChunkInfo info;
-  const std::string record = chunk_.finish(info);
+  const std::string record = chunk_.finish(info, stream_ ? stream_->finish() : std::string());
   info.offset = offset_;
   if (!write_all(record, error)) return false;
   index_.push_back(info);
@@ -103,8 +105,12 @@ bool RecordingWriter::add_frame(std::string_view frame, std::string& error) {
     ++skipped_;  // the encoder will start the next frame it gets with a keyframe (seq gap)
     return true;
   }
-  bool key = false;
-  return add_encoded(encoder_->encode(pose, key), error);
+  // A chunk starts at a keyframe whenever possible (see add_encoded).
+  if (!chunk_.empty() && (encoder_->next_is_keyframe(pose) || chunk_.frame_count() >= options_.max_chunk_frames) &&
+      !flush(error))
+    return false;
+  chunk_.add_stream_frame(stream_->add(pose));
+  return true;
 }
 
 bool RecordingWriter::add_encoded(std::string_view frame, std::string& error) {

@@ -16,6 +16,7 @@
 #include <memory>
 
 #include "proto/frame_codec.hpp"
+#include "proto/frame_stream.hpp"
 #include "proto/recording.hpp"
 
 namespace mc::record {
@@ -29,13 +30,13 @@ struct WriterOptions {
   bool sync = true;
   // Frames between keyframes in the file. 0 stores the stream's frames
   // byte for byte. N > 0 transcodes them (decode, re-encode with a keyframe
-  // every N frames): the same quantized values, so the same decoded poses,
-  // with fewer keyframes. On the benchmark game: 20 (as sent) 3.43 MB, 40
-  // 3.24 MB, 100 3.12 MB, 200 3.08 MB. A seek decodes at most N + 20
-  // frames (~27 us each): at 100 it took 1.3 ms mean, 2.7 ms worst of 200
-  // seeks on a quiet machine, leaving room for a loaded one under the 10 ms
-  // target; 200 gains 1 % more for twice the seek time.
-  int keyframe_interval = 100;
+  // every N frames) into each chunk's frame stream (format 3): the same
+  // quantized values, so the same decoded poses, with fewer keyframes. On
+  // the benchmark game (frames only): 100 2.99 MB, 200 2.95 MB. A seek
+  // decodes at most N + 20 frames (~25 us each): at 200 it took 2.4 ms
+  // mean, 5.1 ms worst of 200 seeks on a quiet machine, under the 10 ms
+  // target with room for a loaded one.
+  int keyframe_interval = 200;
   // Creation time written in the file header (Unix ms); 0 = now. Fixed only
   // to make reproducible files (the golden recording).
   std::uint64_t created_unix_ms = 0;
@@ -73,6 +74,7 @@ class RecordingWriter {
   int fd_ = -1;
   std::unique_ptr<proto::FrameDecoder> decoder_;  // transcoding only
   std::unique_ptr<proto::FrameEncoder> encoder_;
+  std::unique_ptr<proto::FrameStreamEncoder> stream_;  // the chunk's frames, one range-coded stream
   std::uint64_t skipped_ = 0;
   WriterOptions options_;
   std::uint64_t offset_ = 0;

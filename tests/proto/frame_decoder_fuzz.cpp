@@ -1,15 +1,18 @@
 // libFuzzer target for everything in proto/ that reads untrusted bytes: the
 // pose-frame decoder (as a raw frame, and as the body of a delta/keyframe
 // after a valid keyframe so the fuzzer reaches deep into the walk), control
-// messages, the hello, and the recording records. Must never crash, hang or
+// messages, the hello, and the recording records (with their frame streams
+// and binary control messages). Must never crash, hang or
 // read out of bounds (ASan/UBSan); refusing is fine.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "proto/control_binary.hpp"
 #include "proto/control_messages.hpp"
 #include "proto/frame_codec.hpp"
+#include "proto/frame_stream.hpp"
 #include "proto/hello.hpp"
 #include "proto/recording.hpp"
 #include "tests/proto/support/synthetic.hpp"
@@ -68,12 +71,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     rec::parse_record(input, v, error);
     rec::ChunkInfo info;
     std::vector<rec::ChunkEntry> entries;
-    rec::parse_chunk(input, info, entries, error, rec::kFormatMajor);  // control text deflated
+    std::string_view frame_stream;
+    rec::parse_chunk(input, info, entries, error, rec::kFormatMajor, &frame_stream);  // frame stream
+    rec::parse_chunk(input, info, entries, error, 2);                  // control text deflated
     rec::parse_chunk(input, info, entries, error, rec::kOldestMajor);  // control text inline
     std::vector<rec::ChunkInfo> chunks;
     rec::parse_index(input, chunks, error);
     rec::FileHeader fh;
     rec::parse_file_header(input, fh, error);
+    std::string text;
+    rec::expand_control(input, text);  // binary control messages
+  }
+  {  // 5. the bytes as a recording chunk's frame stream, cold and after a keyframe
+    for (int warm = 0; warm < 2; ++warm) {
+      mc::proto::FrameDecoder dec(fx.skeleton);
+      if (warm) dec.decode(fx.frames[0], out, error);
+      mc::proto::FrameStreamDecoder sd(dec, input, {1, 0, 0, 1}, 8);
+      for (int k = 0; k < 8 && sd.next(out, error); ++k) {
+      }
+    }
   }
   return 0;
 }

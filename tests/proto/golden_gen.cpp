@@ -106,10 +106,12 @@ int main(int argc, char** argv) {
     std::cerr << "golden_gen: cannot write " << dir << "/frames_v1.json\n";
     return 1;
   }
-  // The golden recording of the current format (recording_v1.mcrec, format
-  // 1, stays as committed): the same frames, a kick and a goal event.
+  // The golden recording of the current format (recording_vN.mcrec; those
+  // of older formats stay as committed): the same frames, a kick and a goal
+  // event, in chunks of 8 frames transcoded to a keyframe every 10 (format
+  // 3 codes them as frame streams; some chunks start without a keyframe).
   mc::record::RecordingWriter writer;
-  if (!writer.open(dir + "/recording_v" + std::to_string(mc::proto::rec::kFormatMajor) + ".mcrec", to_json(hello), error_out, {8, false, 0, 1763769600000ull})) {
+  if (!writer.open(dir + "/recording_v" + std::to_string(mc::proto::rec::kFormatMajor) + ".mcrec", to_json(hello), error_out, {8, false, 10, 1763769600000ull})) {
     std::cerr << "golden_gen: " << error_out << "\n";
     return 1;
   }

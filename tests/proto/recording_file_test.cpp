@@ -266,7 +266,7 @@ TEST_P(GoldenRecording, StaysReadable) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryFormat, GoldenRecording,
-                         ::testing::Values("recording_v1.mcrec", "recording_v2.mcrec"));
+                         ::testing::Values("recording_v1.mcrec", "recording_v2.mcrec", "recording_v3.mcrec"));
 
 }  // namespace
 }  // namespace mc::record

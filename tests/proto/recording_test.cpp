@@ -124,15 +124,24 @@ TEST(RecordingFormat, ControlTextIsDeflatedAndFormatOneChunksStillParse) {
 // refused with a clear error. (That the refusal comes before any allocation
 // for the claim is parse_chunk's bound check; a test cannot see it.)
 TEST(RecordingFormat, AnImpossibleControlLengthIsRefused) {
+  ChunkInfo info;
+  std::vector<ChunkEntry> entries;
+  std::string error;
+  // Format 2: 16-byte info, u32 entry count, the block to the end.
   std::string p(16, '\0');
   p += std::string("\x01\0\0\0", 4);
   p += "\x02\x80\x80\x80\x10";  // one control entry of 32 MiB
   p += "abc";                      // and a 3-byte block
-  ChunkInfo info;
-  std::vector<ChunkEntry> entries;
-  std::string error;
-  EXPECT_FALSE(parse_chunk(p, info, entries, error));
+  EXPECT_FALSE(parse_chunk(p, info, entries, error, 2));
   EXPECT_NE(error.find("do not inflate"), std::string::npos) << error;
+  // Format 3: LEB128 info and entry count, the block after its length.
+  std::string p3("\x00\x00\x00\x00\x00\x00\x01", 7);  // seq, time, stoppage, flags, substep, 0 frames, 1 entry
+  p3 += "\x02\x80\x80\x80\x10\x03" "abc";
+  EXPECT_FALSE(parse_chunk(p3, info, entries, error, 3));
+  EXPECT_NE(error.find("do not inflate"), std::string::npos) << error;
+  p3.back() = 'd';  // bytes after the block: the block length says 3
+  p3 += "e";
+  EXPECT_FALSE(parse_chunk(p3, info, entries, error, 3));
 }
 
 TEST(RecordingFormat, IndexAndTrailerRoundTrip) {
@@ -148,6 +157,13 @@ TEST(RecordingFormat, IndexAndTrailerRoundTrip) {
   EXPECT_EQ(back[3].offset, 3100u);
   EXPECT_EQ(back[3].first_time, 30);
   EXPECT_FALSE(parse_index(v.payload.substr(0, 10), back, error));
+  EXPECT_FALSE(parse_index(std::string(v.payload) + "x", back, error));   // bytes after the last entry
+  std::string hostile(v.payload);
+  hostile.replace(0, 4, "\xff\xff\xff\xff");                            // 4 billion entries claimed
+  EXPECT_FALSE(parse_index(hostile, back, error));
+  EXPECT_TRUE(back.empty());
+  // Cut anywhere: refused, never over-read.
+  for (std::size_t n = 0; n < v.payload.size(); ++n) EXPECT_FALSE(parse_index(v.payload.substr(0, n), back, error)) << n;
   std::uint64_t off = 0;
   EXPECT_TRUE(parse_trailer(encode_trailer(12345), off));
   EXPECT_EQ(off, 12345u);
