@@ -205,7 +205,11 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s\n", error.c_str());
       return 1;
     }
-    for (const auto& e : encoded) w.add_frame(e, error);
+    // With the control messages the server records (stamina, kicks, play
+    // modes): the file is what matchcast-server writes for this game.
+    testing::for_each_in_stream_order(
+        game, [&](std::size_t i) { w.add_frame(encoded[i], error); },
+        [&](const std::string& text) { w.add_control(text, error); });
     w.close(error);
   }
   record::RecordingReader reader;
@@ -234,8 +238,8 @@ int main(int argc, char** argv) {
     seek_sum += ms;
   }
   std::remove(path.c_str());
-  std::printf("recording: %.2f MB for the full game (target 3 MB), %zu chunks, %s\n", rec_size / 1e6,
-              reader.chunks().size(),
+  std::printf("recording: %.3f MB for the full game (target 3 MB), %zu chunks, %zu control messages, %s\n",
+              rec_size / 1e6, reader.chunks().size(), game.controls.size(),
               recording_keyframe_interval > 0
                   ? ("transcoded to a keyframe every " + std::to_string(recording_keyframe_interval) + " frames").c_str()
                   : "the stream's frames as sent");

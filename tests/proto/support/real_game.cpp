@@ -1,10 +1,15 @@
 #include "tests/proto/support/real_game.hpp"
 
+#include <algorithm>
+#include <iterator>
+
 #include "server/ingest/state_source.hpp"
 #include "tests/proto/support/synthetic.hpp"
 
 #ifdef MATCHCAST_HAVE_ANIMATOR
 #include "anim/animator.hpp"
+#include "anim/event_messages.hpp"
+#include "proto/control_messages.hpp"
 #include "anim/human_skeleton.hpp"
 #endif
 
@@ -33,8 +38,32 @@ bool load_real_game(const std::string& log_path, bool prefer_animator, std::size
     out.skeleton = anim::human_skeleton();
     out.animated_by = "anim::Animator";
     anim::Animator animator(out.skeleton, source->params());
-    for (const auto& st : states) animator.push(st, out.frames);
-    animator.finish(out.frames);
+    std::vector<anim::AnimEvent> events;
+    std::vector<std::pair<int, StaminaUpdate>> stamina;  // (state time, update): once every 10 states
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      if (i % 10 == 0) stamina.emplace_back(states[i].time, stamina_update(states[i]));
+      animator.push(states[i], out.frames, &events);
+    }
+    animator.finish(out.frames, &events);
+    // As server/app/log_feed.cpp sends them: an event just before the first
+    // frame at or after its seq, then a stamina update just before the first
+    // frame of its state, numbered as that frame.
+    std::vector<std::pair<std::size_t, std::string>> by_event, by_time;
+    std::size_t f = 0;
+    for (const auto& e : events) {
+      if (e.type == anim::AnimEventType::Card && e.card == anim::Card::None) continue;
+      while (f < out.frames.size() && out.frames[f].seq < e.seq) ++f;
+      by_event.emplace_back(f, to_json(anim::to_control_message(e)));
+    }
+    f = 0;
+    for (auto& [time, u] : stamina) {
+      while (f < out.frames.size() && out.frames[f].time < time) ++f;
+      u.seq = f < out.frames.size() ? out.frames[f].seq : 0;
+      by_time.emplace_back(f, to_json(ControlMessage{u}));
+    }
+    out.controls.clear();
+    std::merge(by_event.begin(), by_event.end(), by_time.begin(), by_time.end(), std::back_inserter(out.controls),
+               [](const auto& a, const auto& b) { return a.first < b.first; });
     return true;
   }
 #else

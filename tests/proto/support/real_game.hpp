@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "proto/pose_frame.hpp"
@@ -14,9 +15,26 @@ namespace mc::proto::testing {
 struct RealGame {
   SkeletonDef skeleton;
   std::vector<PoseFrame> frames;
+  // The control messages the server sends with these frames (JSON text):
+  // anim's events (kicks, goals, play modes, cards) and a stamina update
+  // once a second, each with the index of the frame it goes out before.
+  // Only with anim::Animator.
+  std::vector<std::pair<std::size_t, std::string>> controls;
   std::string animated_by;  // "anim::Animator" or "GaitSynth"
   std::string left_name, right_name;
 };
+
+// Visits the game as the server sends it: control(text) for each control
+// message, frame(i) for each frame index, in stream order.
+template <class OnFrame, class OnControl>
+void for_each_in_stream_order(const RealGame& game, OnFrame frame, OnControl control) {
+  std::size_t c = 0;
+  for (std::size_t i = 0; i < game.frames.size(); ++i) {
+    for (; c < game.controls.size() && game.controls[c].first <= i; ++c) control(game.controls[c].second);
+    frame(i);
+  }
+  for (; c < game.controls.size(); ++c) control(game.controls[c].second);
+}
 
 // The default benchmark log: the first full HELIOS game in shared/data.
 std::string default_full_game_log();

@@ -1,0 +1,80 @@
+// Issue 5's size targets, on the two real full games in shared/data, as a
+// test that fails when a change to anim or proto breaks them: the stream's
+// mean frame size (<= 300 B) and the server's recording of the whole game
+// with its control messages (<= 3 MB). The benchmark
+// (bench/pose_stream_bench.cpp) prints these figures and the rest.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "proto/frame_codec.hpp"
+#include "proto/hello.hpp"
+#include "server/record/recording_reader.hpp"
+#include "server/record/recording_writer.hpp"
+#include "tests/proto/support/real_game.hpp"
+
+namespace mc::proto {
+namespace {
+
+class RealGameSize : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(RealGameSize, StreamAndRecordingMeetTheirTargets) {
+  testing::RealGame game;
+  std::string error;
+  const std::string log = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/full/" + GetParam();
+  ASSERT_TRUE(testing::load_real_game(log, true, 0, game, error)) << error;
+  if (game.animated_by != "anim::Animator") GTEST_SKIP() << "anim is not built: the targets are for its frames";
+  ASSERT_GT(game.frames.size(), 12000u);  // a whole game: 6,000 cycles at 20 Hz and more
+  ASSERT_GT(game.controls.size(), 1000u);  // stamina every second, kicks, play modes
+
+  FrameEncoder enc(game.skeleton);
+  std::vector<std::string> encoded;
+  std::size_t bytes = 0;
+  for (const auto& f : game.frames) {
+    bool key = false;
+    encoded.push_back(enc.encode(f, key));
+    bytes += encoded.back().size();
+  }
+  EXPECT_LE(static_cast<double>(bytes) / static_cast<double>(encoded.size()), 300.0);
+
+  Hello hello;
+  hello.skeleton = game.skeleton;
+  hello.left.name = game.left_name;
+  hello.right.name = game.right_name;
+  const std::string path = ::testing::TempDir() + "size-" + std::to_string(::getpid()) + ".mcrec";
+  {
+    record::RecordingWriter w;
+    record::WriterOptions options;  // the server's: a keyframe every 200 frames in the file
+    options.sync = false;
+    ASSERT_TRUE(w.open(path, to_json(hello), error, options)) << error;
+    testing::for_each_in_stream_order(
+        game, [&](std::size_t i) { EXPECT_TRUE(w.add_frame(encoded[i], error)) << error; },
+        [&](const std::string& text) { EXPECT_TRUE(w.add_control(text, error)) << error; });
+    ASSERT_TRUE(w.close(error)) << error;
+  }
+  struct stat st {};
+  ASSERT_EQ(::stat(path.c_str(), &st), 0);
+  EXPECT_LE(st.st_size, 3'000'000) << "the recording of a full game must take at most 3 MB";
+
+  // And it reads back whole.
+  record::RecordingReader r;
+  ASSERT_TRUE(r.open(path, error)) << error;
+  EXPECT_FALSE(r.recovered());
+  PoseFrame f;
+  std::vector<std::string> controls;
+  std::size_t n = 0;
+  while (r.next(f, error, &controls)) ++n;
+  EXPECT_TRUE(error.empty()) << error;
+  EXPECT_EQ(n, game.frames.size());
+  EXPECT_EQ(controls.size(), game.controls.size());
+  EXPECT_EQ(r.skipped_frames(), 0u);
+  ::unlink(path.c_str());
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedFullGames, RealGameSize,
+                         ::testing::Values("20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz",
+                                           "20261122031059-HELIOS_A_4-vs-HELIOS_B_3.rcg.gz"));
+
+}  // namespace
+}  // namespace mc::proto
