@@ -17,6 +17,10 @@ HeaderModel::HeaderModel(const StreamStart& s) {
 }  // namespace detail
 namespace {
 
+// A server-time step that changes by more than this (a clock jump, a new
+// source) is sent whole: the signed-value code holds 32 bits at most.
+constexpr std::int64_t kServerTimeJump = std::int64_t{1} << 30;
+
 // One walk of a header for both sides (SPEC.md section 6, "Frame stream"),
 // so that the encoder and decoder cannot disagree on an order or a context.
 // `Io` reads `h` when encoding and writes it when decoding.
@@ -51,17 +55,24 @@ bool walk_header(Io& io, detail::HeaderModel& m, FrameHeader& h) {
   if (!io.check(stoppage >= 0 && stoppage <= 65535, "stoppage")) return false;
   h.stoppage = static_cast<int>(stoppage);
 
-  // Server time: whole in the first frame, then the change of its step.
-  if (m.first) {
+  // Server time: whole in the first frame and after a jump (a bit says
+  // which), else the change of its step since the previous frame.
+  bool whole = m.first;
+  std::int64_t change = 0;
+  if (!m.first) {
+    change = static_cast<std::int64_t>(h.server_time_ms - p.server_time_ms) - m.prev_interval;
+    whole = change < -kServerTimeJump || change > kServerTimeJump;
+    io.flag(m.server_time_whole, whole);
+  }
+  if (whole) {
     std::uint32_t lo = static_cast<std::uint32_t>(h.server_time_ms), hi = static_cast<std::uint32_t>(h.server_time_ms >> 32);
     io.direct(lo, 32);
     io.direct(hi, 32);
     h.server_time_ms = (static_cast<std::uint64_t>(hi) << 32) | lo;
   } else {
-    std::int64_t interval = static_cast<std::int64_t>(h.server_time_ms - p.server_time_ms);
-    std::int64_t change = interval - m.prev_interval;
     if (!io.value(m.server_time, change)) return false;
-    interval = m.prev_interval + change;
+    if (!io.check(change >= -kServerTimeJump && change <= kServerTimeJump, "server time")) return false;
+    const std::int64_t interval = m.prev_interval + change;
     h.server_time_ms = p.server_time_ms + static_cast<std::uint64_t>(interval);
     m.prev_interval = interval;
   }

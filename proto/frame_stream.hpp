@@ -36,11 +36,12 @@ struct StreamStart {
 namespace detail {
 // Adaptive contexts of the headers in one stream.
 struct HeaderModel {
-  Prob keyframe = kProbInit, seq_next = kProbInit, substep_flip = kProbInit, mode_changed = kProbInit;
+  Prob keyframe = kProbInit, seq_next = kProbInit, substep_flip = kProbInit, server_time_whole = kProbInit,
+       mode_changed = kProbInit;
   SignedModel time, stoppage, server_time;
   FrameHeader prev;                 // the previous frame's header
   std::int64_t prev_interval = 50;  // its server-time step, ms
-  bool first = true;                // no frame coded yet (server time sent whole)
+  bool first = true;                // no frame coded yet (server time, play mode and score sent whole)
   explicit HeaderModel(const StreamStart& s);
 };
 }  // namespace detail

@@ -13,7 +13,7 @@ namespace {
 
 // Frames whose headers change the way a real game's do, and some ways it
 // rarely does: a seq gap, a time jump back (a stoppage replay), a stoppage
-// count, play-mode and score changes, jitter and a stall in server time.
+// count, play-mode and score changes, jitter, a stall and jumps in server time.
 std::vector<PoseFrame> awkward_frames(const SkeletonDef& s, int n) {
   auto frames = testing::scripted_frames(s, n);
   std::uint64_t clock = 1763769600123ull;
@@ -21,6 +21,8 @@ std::vector<PoseFrame> awkward_frames(const SkeletonDef& s, int n) {
     PoseFrame& f = frames[static_cast<std::size_t>(i)];
     clock += i % 7 == 3 ? 49 : i % 11 == 5 ? 1250 : 50;
     f.server_time_ms = clock;
+    if (i == 30) f.server_time_ms = 0;  // a source without a clock, then back: jumps of 2^40 ms
+    if (i == 31) f.server_time_ms = ~std::uint64_t{0} - 3;
     if (i >= 9) f.seq += 5;                      // a gap: the encoder makes a keyframe
     if (i >= 14 && i < 20) f.time = 14, f.stoppage = i - 13;  // a stoppage
     if (i >= 17) f.play_mode = PlayMode::FreeKickL;
