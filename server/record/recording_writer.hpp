@@ -33,8 +33,8 @@ struct WriterOptions {
   // every N frames) into each chunk's frame stream (format 3): the same
   // quantized values, so the same decoded poses, with fewer keyframes. On
   // the benchmark game (frames only): 100 2.99 MB, 200 2.95 MB. A seek
-  // decodes at most N + 20 frames (~25 us each): at 200 it took 2.4 ms
-  // mean, 5.1 ms worst of 200 seeks on a quiet machine, under the 10 ms
+  // decodes at most N + 20 frames (~25 us each): at 200 it took 2.4-2.6 ms
+  // mean, 5.4 ms worst of 200 seeks on a quiet machine, under the 10 ms
   // target with room for a loaded one.
   int keyframe_interval = 200;
   // Creation time written in the file header (Unix ms); 0 = now. Fixed only
