@@ -101,7 +101,9 @@ bool RecordingWriter::add_frame(std::string_view frame, std::string& error) {
   if (!decoder_) return add_encoded(frame, error);
   PoseFrame pose;
   std::string why;
-  if (!decoder_->decode(frame, pose, why)) {
+  // The frame stream codes substep as one bit (anim makes 0 and 1 only): a
+  // frame with another value is skipped like one that does not decode.
+  if (!decoder_->decode(frame, pose, why) || pose.substep > 1) {
     ++skipped_;  // the encoder will start the next frame it gets with a keyframe (seq gap)
     return true;
   }

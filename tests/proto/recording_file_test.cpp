@@ -123,6 +123,35 @@ TEST_F(RecordingFile, TranscodingKeepsEveryDecodedValue) {
   }
 }
 
+// The frame stream codes substep in one bit: a frame from the wire with
+// another substep value is skipped and counted, never stored wrong.
+TEST_F(RecordingFile, AFrameWithAnUnknownSubstepIsSkippedAndCounted) {
+  const std::string path = dir + "/odd.mcrec";
+  RecordingWriter w;
+  std::string error;
+  ASSERT_TRUE(w.open(path, proto::to_json(hello), error)) << error;
+  for (std::size_t i = 0; i < 40; ++i) {
+    std::string bytes = encoded[i];
+    // Header byte 14, substep, of the stream's keyframe at seq 20 (even: 0):
+    // 2 has the same parity, so the wire decoder reads the frames alike.
+    if (i == 20) bytes[14] = 2;
+    ASSERT_TRUE(w.add_frame(bytes, error)) << error;
+  }
+  ASSERT_TRUE(w.close(error)) << error;
+  EXPECT_EQ(w.skipped_frames(), 1u);
+  RecordingReader r;
+  ASSERT_TRUE(r.open(path, error)) << error;
+  PoseFrame f;
+  std::size_t n = 0;
+  while (r.next(f, error)) {
+    EXPECT_LE(f.substep, 1);
+    EXPECT_NE(f.seq, frames[20].seq);
+    ++n;
+  }
+  EXPECT_TRUE(error.empty()) << error;
+  EXPECT_EQ(n, 39u);  // frame 21 starts a keyframe (a seq gap after the skip)
+}
+
 TEST_F(RecordingFile, SeeksToAnySimulationTime) {
   const std::string path = write(200, true);
   RecordingReader r;
