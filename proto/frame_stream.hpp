@@ -52,7 +52,8 @@ class FrameStreamEncoder {
   explicit FrameStreamEncoder(FrameEncoder& encoder) : encoder_(encoder) {}
 
   // Codes one frame; returns its header (keyframe as the encoder chose).
-  // Frames must be whole-cycle (substep 0 or 1) and seq must not wrap.
+  // Substep is coded in one bit: it must be 0 or 1 (RecordingWriter skips
+  // other frames).
   FrameHeader add(const PoseFrame& frame);
   std::uint32_t frame_count() const { return frames_; }
   // The stream's bytes ("" when no frame was added), and a fresh stream for

@@ -100,8 +100,8 @@ class ChunkBuilder {
   // `frame` must be a valid encoded frame (its header is read); false + error otherwise.
   bool add_frame(std::string_view frame, std::string& error);
   // A frame that went into the chunk's frame stream (FrameStreamEncoder),
-  // with the header the stream coded. A chunk holds stream frames or
-  // encoded frames, not both.
+  // with the header the stream coded. RecordingWriter puts all of a
+  // chunk's frames one way or the other; parse_chunk reads either.
   void add_stream_frame(const FrameHeader& header);
   void add_control(std::string_view json_text);
   bool empty() const { return entries_ == 0 && stream_run_ == 0; }

@@ -195,8 +195,11 @@ TEST(FrameStream, ChunksCarryStreamFramesBetweenControlMessages) {
   std::string hostile(v.payload);
   const std::size_t run = hostile.find(std::string("\x04\x03", 2));  // the run of frames 0, 1, 2
   ASSERT_NE(run, std::string::npos);
-  hostile[run + 1] = '\x7f';
+  // 2^32 - 1 frames: without the bound, inserting their entries would ask
+  // for ~170 GB and throw.
+  hostile.replace(run + 1, 1, std::string("\xff\xff\xff\xff\x0f", 5));
   EXPECT_FALSE(rec::parse_chunk(hostile, parsed, entries, error, rec::kFormatMajor, &frame_stream));
+  EXPECT_NE(error.find("bad entry"), std::string::npos) << error;
 }
 
 }  // namespace
