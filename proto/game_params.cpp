@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 
+#include "proto/float_chars.hpp"
+
 namespace mc {
 
 double PlayerType::real_speed_max(double maxpower) const {
@@ -23,7 +25,7 @@ double ParamTable::number(const std::string& key, double fallback) const {
   if (s == "true") return 1;
   if (s == "false") return 0;
   double v = 0;
-  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  auto [end, ec] = from_chars_double(s.data(), s.data() + s.size(), v);
   if (ec != std::errc() || end != s.data() + s.size()) return fallback;
   return v;
 }

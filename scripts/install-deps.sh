@@ -12,12 +12,14 @@ runtime=(
   build-essential cmake ninja-build pkg-config   # compiler and build
   libboost-dev libboost-program-options-dev      # Asio + Beast (relay, live feed), options
   nlohmann-json3-dev                             # hello / control messages
+  libfast-float-dev                              # decimal -> double, the same in both builds
   libglm-dev                                     # vector maths in anim/
   zlib1g-dev                                     # .rcg.gz logs
   libssl-dev                                     # TLS for the relay (Boost.Asio SSL)
   libnats-dev                                    # origin/edge relays over NATS
   libglfw3-dev libgl-dev                         # native viewer (window + OpenGL)
   nodejs npm                                     # installs three.js for the page
+  emscripten                                     # the page's log module (ingest+anim+proto in WebAssembly)
 )
 testing=(
   libgtest-dev libgmock-dev libbenchmark-dev     # C++ tests and benchmarks

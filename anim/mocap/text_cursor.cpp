@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "proto/float_chars.hpp"
+
 namespace mc::anim::mocap {
 
 bool parse_double(std::string_view token, double& out) {
@@ -12,7 +14,7 @@ bool parse_double(std::string_view token, double& out) {
   if (t.front() == '+') t.remove_prefix(1);
   // from_chars rejects a leading '+', accepts ".5" and "-.5".
   const auto* end = t.data() + t.size();
-  auto [ptr, ec] = std::from_chars(t.data(), end, out, std::chars_format::general);
+  auto [ptr, ec] = from_chars_double(t.data(), end, out);
   return ec == std::errc() && ptr == end && std::isfinite(out);
 }
 

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "proto/float_chars.hpp"
 #include "server/ingest/binary_writer.hpp"
 
 #include <charconv>
@@ -38,7 +39,7 @@ std::string team_name(const std::string& n) { return n.empty() ? "null" : n; }
 
 bool is_number(const std::string& v) {
   double d = 0;
-  auto r = std::from_chars(v.data(), v.data() + v.size(), d);
+  auto r = from_chars_double(v.data(), v.data() + v.size(), d);
   return !v.empty() && r.ec == std::errc() && r.ptr == v.data() + v.size();
 }
 
@@ -198,7 +199,7 @@ json params_json(const ParamTable& t) {
   json j = json::object();
   for (const auto& [k, v] : t.all()) {
     double d = 0;
-    if (is_number(v) && std::from_chars(v.data(), v.data() + v.size(), d).ec == std::errc()) j[k] = d;
+    if (is_number(v) && from_chars_double(v.data(), v.data() + v.size(), d).ec == std::errc()) j[k] = d;
     else j[k] = v;
   }
   return j;

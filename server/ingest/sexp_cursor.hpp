@@ -1,7 +1,8 @@
 // A hand-written tokenizer for rcssserver's S-expressions: a cursor over one
 // line or datagram. Every read checks the end of the input first, so a cut
 // or malformed record fails a call instead of reading past the end. Numbers
-// go through std::from_chars (handles "-0", exponents; no locale, no copies).
+// go through a fast decimal path, then mc::from_chars_double (fast_float:
+// "-0", exponents; no locale, no copies; proto/float_chars.hpp).
 #pragma once
 
 #include <array>
@@ -9,6 +10,8 @@
 #include <cmath>
 #include <cstdint>
 #include <string_view>
+
+#include "proto/float_chars.hpp"
 
 namespace mc::ingest {
 
@@ -73,7 +76,7 @@ class SexpCursor {
     skip_ws();
     if (p_ < end_ && *p_ == '+') ++p_;  // from_chars refuses a leading '+'
     if (fast_decimal(v)) return true;
-    auto [q, ec] = std::from_chars(p_, end_, v);
+    auto [q, ec] = from_chars_double(p_, end_, v);
     if (ec != std::errc() || q == p_ || !std::isfinite(v) || (q < end_ && !is_delim(*q))) return false;
     p_ = q;
     return true;
@@ -157,7 +160,7 @@ class SexpCursor {
   // Clinger's fast path: [-]digits[.digits] with at most 15 significant
   // digits and no exponent is exactly mantissa / 10^k, and one IEEE
   // division of two exact doubles rounds correctly, so the result equals
-  // strtod's. Anything else (exponents, long mantissas) goes to from_chars.
+  // strtod's. Anything else (exponents, long mantissas) goes to fast_float.
   bool fast_decimal(double& v) {
     static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8,
                                         1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
