@@ -164,6 +164,8 @@ bool NatsLink::ensure_last_per_subject_stream(const std::string& stream, const s
   cfg.MaxMsgsPerSubject = 1;  // the latest keyframe of each game, nothing older
   cfg.Storage = js_FileStorage;
   cfg.Replicas = replicas;
+  // Edges read the snapshots by direct get (last_message).
+  cfg.AllowDirect = true;
   jsOptions o;
   jsOptions_Init(&o);
   o.Wait = 3000;
@@ -183,9 +185,37 @@ NatsLink::Fetch NatsLink::last_message(const std::string& stream, const std::str
   jsOptions o;
   jsOptions_Init(&o);
   o.Wait = 2000;
+  // STREAM.INFO first. nats-server 2.9 lists a stream under creation
+  // before its store exists, and a STREAM.MSG.GET that reaches it then
+  // dereferences the missing store and kills the server (jsMsgGetRequest,
+  // jetstream_api.go:3028 in 2.9.10). STREAM.INFO is safe in that window
+  // and reports no message: a stream that reports one has its store.
   jsErrCode jerr = static_cast<jsErrCode>(0);
+  jsStreamInfo* info = nullptr;
+  natsStatus s = js_GetStreamInfo(&info, js_, stream.c_str(), &o, &jerr);
+  if (s != NATS_OK) {
+    if (s == NATS_NOT_FOUND || jerr == JSStreamNotFoundErr) return Fetch::NotFound;
+    error = "JetStream stream info " + stream + ": " + status_text(s);
+    return Fetch::Failed;
+  }
+  const bool stored = info->State.LastSeq > 0;
+  const bool direct = info->Config && info->Config->AllowDirect;
+  jsStreamInfo_Destroy(info);
+  if (!stored) return Fetch::NotFound;
+  // A direct get is answered by the stream itself, which subscribes only
+  // once its store exists (on a cluster: on whichever replica is current),
+  // so it cannot reach a half-made stream at all. Streams made before
+  // allow_direct get the message-get, which the check above makes safe.
   natsMsg* msg = nullptr;
-  const natsStatus s = js_GetLastMsg(&msg, js_, stream.c_str(), subject.c_str(), &o, &jerr);
+  jerr = static_cast<jsErrCode>(0);
+  if (direct) {
+    jsDirectGetMsgOptions d;
+    jsDirectGetMsgOptions_Init(&d);
+    d.LastBySubject = subject.c_str();
+    s = js_DirectGetMsg(&msg, js_, stream.c_str(), &o, &d);
+  } else {
+    s = js_GetLastMsg(&msg, js_, stream.c_str(), subject.c_str(), &o, &jerr);
+  }
   if (s == NATS_OK) {
     out.assign(natsMsg_GetData(msg), static_cast<std::size_t>(natsMsg_GetDataLength(msg)));
     natsMsg_Destroy(msg);

@@ -57,7 +57,11 @@ class NatsLink {
   bool ensure_last_per_subject_stream(const std::string& stream, const std::string& subjects, int replicas,
                                       std::string& error);
   enum class Fetch { Found, NotFound, Failed };
-  // The last message stored for `subject` in `stream`.
+  // The last message stored for `subject` in `stream`. Asks STREAM.INFO
+  // first and reads a message only from a stream that answered with at
+  // least one message stored: nats-server 2.9 crashes on a message-get
+  // that reaches a stream still being created (server/nats/README.md, "The
+  // broker crash"). NotFound: no such stream, or nothing stored yet.
   Fetch last_message(const std::string& stream, const std::string& subject, std::string& out, std::string& error);
 
  private:

@@ -23,6 +23,7 @@
 #include "proto/frame_header.hpp"
 #include "server/nats/nats_link.hpp"
 #include "tests/nats/child_process.hpp"
+#include "tests/nats/nats_processes.hpp"
 #include "tests/nats/spectator.hpp"
 #include "tests/relay/ws_test_client.hpp"
 
@@ -34,31 +35,15 @@ using mc::nats::testing::Spectator;
 using mc::nats::testing::consecutive;
 using mc::nats::testing::eventually;
 using mc::nats::testing::describe;
+using mc::nats::testing::find_nats_server;
+using mc::nats::testing::free_port;
 using mc::nats::testing::in_sequence_after_sync;
+using mc::nats::testing::matchcast_argv;
+using mc::nats::testing::port_open;
+using mc::nats::testing::wait_for_port;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-std::string find_nats_server() {
-  if (const char* env = std::getenv("NATS_SERVER")) return env;
-  for (const char* p : {"/usr/sbin/nats-server", "/usr/bin/nats-server", "/usr/local/bin/nats-server"})
-    if (::access(p, X_OK) == 0) return p;
-  return {};
-}
-
-std::uint16_t free_port() {
-  boost::asio::io_context io;
-  boost::asio::ip::tcp::acceptor a(io, {boost::asio::ip::make_address("127.0.0.1"), 0});
-  return a.local_endpoint().port();
-}
-
-bool port_open(std::uint16_t port) {
-  boost::asio::io_context io;
-  boost::asio::ip::tcp::socket s(io);
-  boost::system::error_code ec;
-  s.connect({boost::asio::ip::make_address("127.0.0.1"), port}, ec);
-  return !ec;
-}
 
 class NatsOriginEdge : public ::testing::Test {
  protected:
@@ -102,17 +87,9 @@ class NatsOriginEdge : public ::testing::Test {
 
   std::uint16_t start_server(ChildProcess& p, const std::string& name, std::vector<std::string> extra,
                              const std::string& record_dir) {
-    std::vector<std::string> argv = {MATCHCAST_SERVER, "--port", "0", "--record-dir", (dir_ / record_dir).string(),
-                                     "--threads", "1",
-                                     "--web", std::string(MATCHCAST_SOURCE_DIR) + "/web",
-                                     "--nats-url", "nats://127.0.0.1:" + std::to_string(nats_port_),
-                                     "--nats-reconnect-wait-ms", "200"};
-    argv.insert(argv.end(), extra.begin(), extra.end());
+    const auto argv = matchcast_argv("nats://127.0.0.1:" + std::to_string(nats_port_), (dir_ / record_dir).string(), extra);
     if (!p.start(argv, (dir_ / (name + ".log")).string())) return 0;
-    const std::string line = p.wait_for_line("Matchcast: open http://", 30s);
-    const auto colon = line.rfind(':');
-    if (line.empty() || colon == std::string::npos) return 0;
-    return static_cast<std::uint16_t>(std::stoi(line.substr(colon + 1)));
+    return wait_for_port(p, 30s);
   }
 
   // A spectator that has received its hello and at least `frames` frames.

@@ -1,0 +1,66 @@
+// What the NATS end-to-end tests start: nats-server and matchcast-server
+// processes on loopback, on free ports. Every wait is bounded.
+#pragma once
+
+#include <unistd.h>
+
+#include <boost/asio/ip/tcp.hpp>
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "tests/nats/child_process.hpp"
+
+namespace mc::nats::testing {
+
+// nats-server from $NATS_SERVER or Debian's places; "" when not installed.
+inline std::string find_nats_server() {
+  if (const char* env = std::getenv("NATS_SERVER")) return env;
+  for (const char* p : {"/usr/sbin/nats-server", "/usr/bin/nats-server", "/usr/local/bin/nats-server"})
+    if (::access(p, X_OK) == 0) return p;
+  return {};
+}
+
+// A port that was free on 127.0.0.1 a moment ago.
+inline std::uint16_t free_port() {
+  boost::asio::io_context io;
+  boost::asio::ip::tcp::acceptor a(io, {boost::asio::ip::make_address("127.0.0.1"), 0});
+  return a.local_endpoint().port();
+}
+
+inline bool port_open(std::uint16_t port) {
+  boost::asio::io_context io;
+  boost::asio::ip::tcp::socket s(io);
+  boost::system::error_code ec;
+  s.connect({boost::asio::ip::make_address("127.0.0.1"), port}, ec);
+  return !ec;
+}
+
+// matchcast-server's arguments for a test: port 0, one I/O thread, the
+// given NATS URL, reconnects every 200 ms; then `extra`.
+inline std::vector<std::string> matchcast_argv(const std::string& nats_url, const std::string& record_dir,
+                                               const std::vector<std::string>& extra) {
+  std::vector<std::string> argv = {MATCHCAST_SERVER, "--port", "0", "--record-dir", record_dir, "--threads", "1",
+                                   "--web", std::string(MATCHCAST_SOURCE_DIR) + "/web", "--nats-url", nats_url,
+                                   "--nats-reconnect-wait-ms", "200"};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return argv;
+}
+
+// The HTTP port a started matchcast-server prints ("Matchcast: open
+// http://HOST:PORT/"), or 0 when it did not within `timeout`.
+inline std::uint16_t wait_for_port(ChildProcess& p, std::chrono::milliseconds timeout) {
+  const std::string line = p.wait_for_line("Matchcast: open http://", timeout);
+  const auto colon = line.rfind(':');
+  if (line.empty() || colon == std::string::npos) return 0;
+  return static_cast<std::uint16_t>(std::stoi(line.substr(colon + 1)));
+}
+
+// The game the tests broadcast (the bundled one).
+inline std::string test_game_log() {
+  return std::string(MATCHCAST_SOURCE_DIR) + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
+}
+
+}  // namespace mc::nats::testing
