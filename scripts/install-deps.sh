@@ -14,7 +14,8 @@ runtime=(
   nlohmann-json3-dev                             # hello / control messages
   libfast-float-dev                              # decimal -> double, the same in both builds
   libglm-dev                                     # vector maths in anim/
-  zlib1g-dev                                     # .rcg.gz logs
+  zlib1g-dev                                     # .rcg.gz logs, gzipped mocap clips
+  libpng-dev                                     # PNG pictures of the tools and the viewer
   libssl-dev                                     # TLS for the relay (Boost.Asio SSL)
   libnats-dev                                    # origin/edge relays over NATS
   libglfw3-dev libgl-dev                         # native viewer (window + OpenGL)

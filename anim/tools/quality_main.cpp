@@ -1,14 +1,17 @@
-// matchcast-anim-quality: animates whole logs and prints the quality metrics
-// of issue 4, each with its target, then writes a picture of one player's
-// kick and run.
+// matchcast-anim-quality: animates whole logs and measures what a spectator
+// receives (issue 23, close_up_metrics.hpp): the frames encoded and decoded,
+// posed on the hello's skeleton, at 20 Hz and at the clients' drawing rate;
+// each figure with its target. Then it writes a picture of one player's kick
+// and run.
 //
 //   matchcast-anim-quality [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR]
-//                          [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...
+//                          [--png FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...
 //
 // --mode mocap takes the kicks and slow walking from the CMU clips
 // (anim/motion_source.hpp; the motion graph is cached in --mocap-cache);
 // --compare animates each log in both modes and prints the metrics side by
-// side (the picture then shows the mocap mode).
+// side (the picture then shows the mocap mode). --draw-rate: the clients'
+// drawing rate measured beside the 20 Hz frames (a multiple of 20, default 60).
 //
 // Exit status 0 when every target holds on every log, 1 otherwise, 2 on bad
 // arguments or unreadable logs.
@@ -20,9 +23,11 @@
 #include "anim/animator.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/mocap/io/motion_source_files.hpp"
+#include "anim/tools/close_up_metrics.hpp"
 #include "anim/tools/metrics.hpp"
 #include "anim/tools/mode_compare.hpp"
 #include "anim/tools/strip_plot.hpp"
+#include "anim/tools/stream_view.hpp"
 #include "server/ingest/state_source.hpp"
 
 namespace {
@@ -134,9 +139,11 @@ int main(int argc, char** argv) {
   std::vector<std::string> logs;
   std::string mode = "keyframe", mocap_dir = MATCHCAST_DEFAULT_MOCAP_DIR, mocap_cache = MATCHCAST_DEFAULT_MOCAP_CACHE;
   bool compare = false;
+  int draw_rate = 60;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--png" && i + 1 < argc) png = argv[++i];
+    else if (arg == "--draw-rate" && i + 1 < argc) draw_rate = std::atoi(argv[++i]);
     else if (arg == "--lookahead" && i + 1 < argc) cfg.lookahead_cycles = std::atoi(argv[++i]);
     else if (arg == "--mode" && i + 1 < argc && (std::string(argv[i + 1]) == "keyframe" || std::string(argv[i + 1]) == "mocap"))
       mode = argv[++i];
@@ -151,14 +158,18 @@ int main(int argc, char** argv) {
       }
       cfg.detail = *d;
     } else if (!arg.empty() && arg[0] == '-') {
-      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
       return 2;
     } else {
       logs.push_back(arg);
     }
   }
+  if (draw_rate < 20 || draw_rate % 20 != 0) {
+    std::fprintf(stderr, "%s: --draw-rate must be a multiple of 20\n", argv[0]);
+    return 2;
+  }
   if (logs.empty()) {
-    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
     return 2;
   }
   // Mocap mode: the caller loads the clips, the animator stays pure.
@@ -180,17 +191,34 @@ int main(int argc, char** argv) {
   for (const std::string& log : logs) {
     Animated a;
     if (!animate_log(log, shown_cfg, a)) return 2;
-    const tools::QualityReport r =
-        tools::measure(human_skeleton(), a.states, a.frames, a.infos, a.events, a.params.ball_size());
+    // What a spectator receives, measured at 20 Hz and at the drawing rate.
+    auto close_up = [&](const Animated& x, const char* label) {
+      StreamView view;
+      std::string err;
+      if (!view_stream(human_skeleton(), x.params, x.frames, x.events, view, err)) {
+        std::fprintf(stderr, "%s: the stream does not decode: %s\n", log.c_str(), err.c_str());
+        return false;
+      }
+      const CloseUpReport r20 = measure_close_up(view, x.states, x.frames, 1);
+      const CloseUpReport rd = measure_close_up(view, x.states, x.frames, draw_rate / 20);
+      std::printf("== %s%s (%zu frames, %zu kicks, %.0f B/frame on the wire)\n%s", log.c_str(), label, view.frames.size(),
+                  view.kicks.size(), static_cast<double>(view.encoded_bytes) / static_cast<double>(std::max<std::size_t>(1, view.frames.size())),
+                  format_close_up({&r20, &rd}).c_str());
+      return close_up_targets_hold(r20) && close_up_targets_hold(rd);
+    };
     if (compare) {
       Animated k;
       if (!animate_log(log, cfg, k)) return 2;
+      const tools::QualityReport r =
+          tools::measure(human_skeleton(), a.states, a.frames, a.infos, a.events, a.params.ball_size());
       const tools::QualityReport rk =
           tools::measure(human_skeleton(), k.states, k.frames, k.infos, k.events, k.params.ball_size());
-      std::printf("== %s (keyframe | mocap)\n%s", log.c_str(), tools::format_comparison(rk, r).c_str());
-      all_ok = all_ok && tools::targets_hold(rk);
+      std::printf("== %s (keyframe | mocap), the animator's own bookkeeping (issue 4)\n%s", log.c_str(),
+                  tools::format_comparison(rk, r).c_str());
+      all_ok = close_up(k, " keyframe mode") && all_ok;
+      all_ok = close_up(a, " mocap mode") && all_ok;
     } else {
-      std::printf("== %s%s\n%s", log.c_str(), mode == "mocap" ? " (mocap mode)" : "", tools::format_report(r).c_str());
+      all_ok = close_up(a, mode == "mocap" ? " mocap mode" : "") && all_ok;
     }
     int counts[kActionCount] = {};
     for (const FrameInfo& fi : a.infos)
@@ -198,7 +226,6 @@ int main(int argc, char** argv) {
     std::printf("actions (player-frames):");
     for (int k = 0; k < kActionCount; ++k) std::printf(" %s %d", action_name(static_cast<Action>(k)), counts[k]);
     std::printf("\n");
-    all_ok = all_ok && tools::targets_hold(r);
     int slot = -1;
     unsigned from = 0, to = 0;
     if (trace != nullptr && std::sscanf(trace, "%d %u %u", &slot, &from, &to) == 3 && slot >= 0 && slot < kMaxPlayers) {

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "anim/tools/png_writer.hpp"
+#include "anim/tools/png.hpp"
 #include "proto/pose_frame.hpp"
 #include "proto/skeleton.hpp"
 

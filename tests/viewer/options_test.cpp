@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <vector>
 
-#include "viewer/png.hpp"
 #include "viewer/ws_source.hpp"
 
 namespace mc::viewer {
@@ -91,25 +90,6 @@ TEST(Options, PlayerNames) {
   EXPECT_FALSE(parse_player("x1", side, unum));
   EXPECT_FALSE(parse_player("l0", side, unum));
   EXPECT_FALSE(parse_player("l", side, unum));
-}
-
-TEST(Png, WritesWhatItReadsBack) {
-  Image image;
-  image.width = 7;
-  image.height = 3;
-  for (int i = 0; i < 7 * 3 * 3; ++i) image.rgb.push_back(static_cast<std::uint8_t>(i * 11));
-  const std::string path = testing::TempDir() + "/viewer_png_test.png";
-  std::string error;
-  ASSERT_TRUE(write_png(path, image, error)) << error;
-  Image back;
-  ASSERT_TRUE(read_png(path, back, error)) << error;
-  EXPECT_EQ(back.width, 7);
-  EXPECT_EQ(back.height, 3);
-  EXPECT_EQ(back.rgb, image.rgb);
-  // Not a PNG, or a missing file: a clear error.
-  EXPECT_FALSE(read_png(std::string(MATCHCAST_SOURCE_DIR) + "/README.md", back, error));
-  EXPECT_NE(error.find("not a PNG"), std::string::npos);
-  EXPECT_FALSE(read_png("/nonexistent.png", back, error));
 }
 
 }  // namespace

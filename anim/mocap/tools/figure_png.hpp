@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "anim/mocap/capability_map.hpp"
-#include "anim/tools/png_writer.hpp"
+#include "anim/tools/png.hpp"
 
 namespace mc::anim::mocap::tools {
 
