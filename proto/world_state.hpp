@@ -5,7 +5,7 @@
 // logs or the live monitor feed), anim consumes it. It lives at the bottom of
 // the dependency graph so that anim never reaches up into server/.
 //
-// Units and frames are rcssserver's own (see shared/reference/rcss-protocol.md
+// Units and frames are rcssserver's own (see server/ingest/rcss-protocol.md
 // section 1): metres, field origin at the centre spot, +x towards the right
 // team's goal, +y towards the bottom touchline; angles in degrees from +x
 // towards +y; velocities in metres per cycle. Nothing is mirrored.

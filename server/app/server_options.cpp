@@ -58,7 +58,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   std::string role = "standalone", edge_games, record_at = "origin";
   unsigned nats_reconnect_ms = 0, origin_silence_ms = 0;
   std::vector<std::string> details, anim_modes;
-  std::string reach_channels, mocap_dir = source_dir + "/../shared/data/mocap", mocap_cache = "mocap-cache";
+  std::string reach_channels, mocap_dir = source_dir + "/data/mocap", mocap_cache = "mocap-cache";
   po::options_description desc(
       "matchcast-server: broadcast a RoboCup 2D game as a live 3D stream\n\nOptions");
   // clang-format off

@@ -1,4 +1,4 @@
-// StateSource over a monitor capture file (shared/data/rcg/generated/
+// StateSource over a monitor capture file (tests/data/rcg/generated/
 // mon19-*.dgrams.gz): every datagram a monitor received, replayed through
 // the same MonitorStream the live client uses. Record format (little-endian):
 // float64 unix_time, uint16 source_port, uint32 length, then the payload.

@@ -1,6 +1,6 @@
 // Parser for rcssserver's text show record, shared by the log reader (ULG4/5/6
 // `(show ...)` lines) and the live monitor client (v3/v4/v5 show datagrams).
-// Grammar: shared/reference/rcss-protocol.md section 3.1.
+// Grammar: server/ingest/rcss-protocol.md section 3.1.
 #pragma once
 
 #include <string>

@@ -88,7 +88,7 @@ TEST(ClassifyRaw, StateBitsAndTeleports) {
 // stream found by hand, each checked against its state bits first.
 TEST(ClassifyRaw, SnippetsOfARealLog) {
   const std::string path =
-      std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/full/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
+      std::string(MATCHCAST_TEST_RCG_DIR) + "/full/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
   std::string err;
   auto src = ingest::open_log(path, err);
   ASSERT_TRUE(src) << err;

@@ -1,4 +1,4 @@
-// The quality tool's targets on both full games of shared/data/rcg/full
+// The quality tool's targets on both full games of tests/data/rcg/full
 // (issue 4): the same measurement as matchcast-anim-quality.
 #include <string>
 #include <vector>
@@ -14,7 +14,7 @@ namespace mc::anim::tools {
 namespace {
 
 void check_log(const char* name) {
-  const std::string path = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/full/" + name;
+  const std::string path = std::string(MATCHCAST_TEST_RCG_DIR) + "/full/" + name;
   std::string err;
   auto src = ingest::open_log(path, err);
   ASSERT_TRUE(src) << err;

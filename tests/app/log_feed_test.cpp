@@ -118,7 +118,7 @@ TEST(LogFeed, RefusesAMissingOrEmptyLogWithAClearError) {
   EXPECT_FALSE(feed.start(error));
   EXPECT_NE(error.find("/nonexistent/game.rcg"), std::string::npos) << error;
 
-  config.log_path = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/real/20190926071807-HELIOS_base_0-vs-null.rcg";
+  config.log_path = std::string(MATCHCAST_TEST_RCG_DIR) + "/real/20190926071807-HELIOS_base_0-vs-null.rcg";
   LogFeed empty(config, channel);
   EXPECT_FALSE(empty.start(error));
   EXPECT_NE(error.find("no game states"), std::string::npos) << error;

@@ -43,7 +43,7 @@ TEST(ServerOptions, BadDetailOrLookaheadIsAClearError) {
 
 TEST(ServerOptions, AnimModeMocapLoadsTheCapturesOnceForTheChannelsThatAskForIt) {
   std::string message;
-  const std::string dir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap";
+  const std::string dir = std::string(MATCHCAST_MOCAP_DIR) + "";
   const std::string cache = ::testing::TempDir() + "/matchcast-options-mocap-cache";
   auto o = parse({"--rcg", "a=x.rcg", "--rcg", "b=y.rcg", "--rcg", "c=z.rcg", "--anim-mode", "mocap", "--anim-mode",
                   "a=keyframe", "--mocap-dir", dir.c_str(), "--mocap-cache", cache.c_str()},

@@ -15,7 +15,7 @@ namespace mc::ingest {
 namespace {
 
 using testing::Tolerance;
-const std::string kGen = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/generated/";
+const std::string kGen = std::string(MATCHCAST_TEST_RCG_DIR) + "/generated/";
 
 std::vector<WorldState> read_all(std::unique_ptr<StateSource> src, bool drop_before_kick_off,
                                  IngestStats* stats = nullptr) {

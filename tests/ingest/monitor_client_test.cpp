@@ -15,7 +15,7 @@ namespace mc::ingest {
 namespace {
 
 using namespace std::chrono_literals;
-const std::string kGen = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/generated/";
+const std::string kGen = std::string(MATCHCAST_TEST_RCG_DIR) + "/generated/";
 const std::string kV6 = kGen + "gen19-v6-20261122025254-Alpha_0-vs-Beta_0.rcg.gz";
 
 // A feeder serving `log` on an ephemeral port from a background thread.

@@ -1,4 +1,4 @@
-// open_log() over every file in shared/data/rcg/: format sniffing and the
+// open_log() over every file in tests/data/rcg/: format sniffing and the
 // values listed in that folder's README (shows, time range, final score,
 // team names, play-mode changes).
 #include "server/ingest/state_source.hpp"
@@ -12,7 +12,7 @@
 namespace mc::ingest {
 namespace {
 
-const std::string kData = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/";
+const std::string kData = std::string(MATCHCAST_TEST_RCG_DIR) + "/";
 
 struct Expected {
   std::string file;

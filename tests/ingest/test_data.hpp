@@ -1,4 +1,4 @@
-// Test helper: paths into shared/data/rcg and whole-file reads (tests only;
+// Test helper: paths into tests/data/rcg and whole-file reads (tests only;
 // the readers themselves stream).
 #pragma once
 
@@ -8,7 +8,7 @@
 
 namespace mc::ingest::testing {
 
-inline std::string rcg(const std::string& rel) { return std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/" + rel; }
+inline std::string rcg(const std::string& rel) { return std::string(MATCHCAST_TEST_RCG_DIR) + "/" + rel; }
 
 // The decoded (gunzipped) bytes of a file; "" if it cannot be read.
 inline std::string decoded(const std::string& path) {

@@ -9,7 +9,7 @@
 namespace mc::ingest {
 namespace {
 
-const std::string kData = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/";
+const std::string kData = std::string(MATCHCAST_TEST_RCG_DIR) + "/";
 
 TEST(TextLogSource, FullUlg6GameMatchesReadme) {
   std::string err;

@@ -72,7 +72,7 @@ TEST(AsfAmcParser, BadInputIsAnError) {
 }
 
 TEST(AsfAmcParser, RealSubject16Loads) {
-  const std::string dir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap/asfamc/";
+  const std::string dir = std::string(MATCHCAST_MOCAP_DIR) + "/asfamc/";
   MocapClip clip;
   std::string error;
   ASSERT_TRUE(io::load_amc(dir + "16.asf", dir + "16_15.amc", clip, error)) << error;

@@ -100,7 +100,7 @@ TEST(BvhParser, HostileNestingIsBounded) {
 }
 
 TEST(BvhParser, RealCmuClipsLoad) {
-  const std::string dir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap/";
+  const std::string dir = std::string(MATCHCAST_MOCAP_DIR) + "/";
   struct Case { const char* file; int frames_in_header; int joints; bool tpose; };
   for (const Case c : {Case{"cmu_10_04.bvh", 550, 38, true}, Case{"cmu_10_03.bvh", 363, 38, true},
                        Case{"cmu_11_01_dazfriendly.bvh", 598, 0, false}}) {

@@ -14,7 +14,7 @@ namespace {
 // The graph and map of the CMU clips in shared/, from the test cache.
 bool load_real_assets(io::MocapAssets& a, std::string& error) {
   io::AssetOptions o;
-  o.clips.dir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap";
+  o.clips.dir = std::string(MATCHCAST_MOCAP_DIR) + "";
   o.map.start_node = -1;
   o.cache_dir = MATCHCAST_MOCAP_CACHE;
   return io::load_or_build_assets(o, a, error);
@@ -56,7 +56,7 @@ TEST(CmuAssets, GraphAndMapFromTheRealClips) {
 
 TEST(CmuAssets, ReachModelForTheServer) {
   std::string error;
-  const auto model = io::load_reach_model(std::string(MATCHCAST_SHARED_DIR) + "/data/mocap", MATCHCAST_MOCAP_CACHE, error);
+  const auto model = io::load_reach_model(std::string(MATCHCAST_MOCAP_DIR) + "", MATCHCAST_MOCAP_CACHE, error);
   ASSERT_TRUE(model) << error;
   EXPECT_GT(model->reference_speed, 0.8f);
   EXPECT_LT(model->reference_speed, 2.5f);

@@ -17,10 +17,10 @@ namespace {
 
 TEST(MocapModeFullGame, TargetsHoldOnTheFirstGame) {
   std::string err;
-  const auto source = io::load_mocap_motion_source(std::string(MATCHCAST_SHARED_DIR) + "/data/mocap", err);
+  const auto source = io::load_mocap_motion_source(std::string(MATCHCAST_MOCAP_DIR) + "", err);
   ASSERT_NE(source, nullptr) << err;
   auto src = ingest::open_log(
-      std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/full/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz", err);
+      std::string(MATCHCAST_TEST_RCG_DIR) + "/full/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz", err);
   ASSERT_TRUE(src) << err;
   std::vector<WorldState> states;
   WorldState s;

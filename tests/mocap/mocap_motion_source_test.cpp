@@ -23,7 +23,7 @@ namespace {
 std::shared_ptr<const MocapMotionSource> source() {
   static const auto s = [] {
     std::string error;
-    auto p = io::load_mocap_motion_source(std::string(MATCHCAST_SHARED_DIR) + "/data/mocap", error);
+    auto p = io::load_mocap_motion_source(std::string(MATCHCAST_MOCAP_DIR) + "", error);
     EXPECT_NE(p, nullptr) << error;
     return p;
   }();

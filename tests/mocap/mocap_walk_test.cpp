@@ -20,7 +20,7 @@
 namespace mc::anim::mocap {
 namespace {
 
-const std::string kDir = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap";
+const std::string kDir = std::string(MATCHCAST_MOCAP_DIR) + "";
 
 std::shared_ptr<const MocapMotionSource> walk_source() {
   static const auto s = [] {

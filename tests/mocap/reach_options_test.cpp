@@ -17,7 +17,7 @@ std::optional<ServerOptions> parse(std::vector<std::string> args, std::string& m
   return parse_server_options(static_cast<int>(argv.size()), argv.data(), message, code);
 }
 
-const std::string kMocap = std::string(MATCHCAST_SHARED_DIR) + "/data/mocap";
+const std::string kMocap = std::string(MATCHCAST_MOCAP_DIR) + "";
 const std::string kLog = std::string(MATCHCAST_SOURCE_DIR) + "/data/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
 
 }  // namespace

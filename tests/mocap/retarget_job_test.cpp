@@ -17,7 +17,7 @@ namespace {
 MocapClip load(const char* name) {
   MocapClip c;
   std::string error;
-  EXPECT_TRUE(io::load_bvh(std::string(MATCHCAST_SHARED_DIR) + "/data/mocap/" + name, c, error)) << error;
+  EXPECT_TRUE(io::load_bvh(std::string(MATCHCAST_MOCAP_DIR) + "/" + name, c, error)) << error;
   return resample(c, 30);
 }
 

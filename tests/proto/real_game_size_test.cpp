@@ -1,4 +1,4 @@
-// Issue 5's size targets, on the two real full games in shared/data, as a
+// Issue 5's size targets, on the two real full games in tests/data/rcg, as a
 // test that fails when a change to anim or proto breaks them: the stream's
 // mean frame size (<= 300 B) and the server's recording of the whole game
 // with its control messages (<= 3 MB). The benchmark
@@ -22,7 +22,7 @@ class RealGameSize : public ::testing::TestWithParam<const char*> {};
 TEST_P(RealGameSize, StreamAndRecordingMeetTheirTargets) {
   testing::RealGame game;
   std::string error;
-  const std::string log = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/full/" + GetParam();
+  const std::string log = std::string(MATCHCAST_TEST_RCG_DIR) + "/full/" + GetParam();
   ASSERT_TRUE(testing::load_real_game(log, true, 0, game, error)) << error;
   if (game.animated_by != "anim::Animator") GTEST_SKIP() << "anim is not built: the targets are for its frames";
   ASSERT_GT(game.frames.size(), 12000u);  // a whole game: 6,000 cycles at 20 Hz and more

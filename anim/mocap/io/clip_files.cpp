@@ -1,6 +1,8 @@
 #include "anim/mocap/io/clip_files.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <cstdio>
 #include <fstream>
@@ -12,13 +14,32 @@
 
 namespace mc::anim::mocap::io {
 
+namespace {
+
+bool exists(const std::string& path) {
+  struct stat st{};
+  return ::stat(path.c_str(), &st) == 0;
+}
+
+}  // namespace
+
+// The clips ship gzipped (data/mocap/*.gz): a name without ".gz" that is not
+// on disk is read from its ".gz" twin. zlib's gzread passes a file that is
+// not gzip through unchanged, so one path reads both.
 bool read_file(const std::string& path, std::string& out, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) { error = path + ": cannot open"; return false; }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) { error = path + ": read error"; return false; }
-  out = std::move(ss).str();
+  const std::string actual = (!exists(path) && exists(path + ".gz")) ? path + ".gz" : path;
+  gzFile in = ::gzopen(actual.c_str(), "rb");
+  if (in == nullptr) { error = path + ": cannot open"; return false; }
+  std::string bytes;
+  char buffer[1 << 16];
+  int n = 0;
+  while ((n = ::gzread(in, buffer, sizeof buffer)) > 0) bytes.append(buffer, static_cast<std::size_t>(n));
+  int zerr = Z_OK;
+  const char* message = ::gzerror(in, &zerr);
+  const bool truncated = n < 0 || (zerr != Z_OK && zerr != Z_BUF_ERROR);
+  ::gzclose(in);
+  if (truncated) { error = actual + ": read error (" + message + ")"; return false; }
+  out = std::move(bytes);
   return true;
 }
 

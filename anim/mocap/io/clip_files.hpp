@@ -1,6 +1,6 @@
 // The file side of the mocap loaders (the parsers in anim/mocap take text in
 // memory): reads BVH and ASF/AMC files, and the standard CMU clip set of
-// shared/data/mocap resampled to 30 Hz on one skeleton.
+// data/mocap (gzipped) resampled to 30 Hz on one skeleton.
 #pragma once
 
 #include <string>
@@ -19,7 +19,7 @@ bool load_bvh(const std::string& path, MocapClip& clip, std::string& error);
 bool load_amc(const std::string& asf_path, const std::string& amc_path, MocapClip& clip, std::string& error);
 
 struct ClipSetOptions {
-  std::string dir;            // shared/data/mocap
+  std::string dir;            // data/mocap
   double hz = 30;             // resampling rate
   bool include_asf = true;    // subject 16's walks (ASF/AMC)
   bool include_jumps = true;  // cmu_01_01 (forward jumps, turn around)

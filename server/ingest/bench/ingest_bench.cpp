@@ -1,7 +1,7 @@
 // matchcast-ingest-bench [--repeat N] [LOG...]
 //
 // Throughput of the log reader on full games (default: both games in
-// shared/data/rcg/full/). For each log it measures, best of N runs:
+// tests/data/rcg/full/). For each log it measures, best of N runs:
 //   inflate  - gunzip only (ByteSource), MB/s of decompressed output;
 //   stream   - open_log() on the .gz file end to end (inflate + parse);
 //   text     - open_log() on a decompressed copy (a temp file, streamed):
@@ -21,8 +21,8 @@
 #include "server/ingest/byte_source.hpp"
 #include "server/ingest/state_source.hpp"
 
-#ifndef MATCHCAST_SHARED_DIR
-#define MATCHCAST_SHARED_DIR "../shared"
+#ifndef MATCHCAST_TEST_RCG_DIR
+#define MATCHCAST_TEST_RCG_DIR "tests/data/rcg"
 #endif
 
 namespace {
@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
     } else logs.push_back(a);
   }
   if (logs.empty()) {
-    const std::string full = std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/full/";
+    const std::string full = std::string(MATCHCAST_TEST_RCG_DIR) + "/full/";
     logs = {full + "20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz",
             full + "20261122031059-HELIOS_A_4-vs-HELIOS_B_3.rcg.gz"};
   }

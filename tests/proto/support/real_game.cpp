@@ -16,7 +16,7 @@
 namespace mc::proto::testing {
 
 std::string default_full_game_log() {
-  return std::string(MATCHCAST_SHARED_DIR) + "/data/rcg/full/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
+  return std::string(MATCHCAST_TEST_RCG_DIR) + "/full/20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz";
 }
 
 bool load_real_game(const std::string& log_path, bool prefer_animator, std::size_t max_states, RealGame& out,

@@ -36,7 +36,7 @@ void for_each_in_stream_order(const RealGame& game, OnFrame frame, OnControl con
   for (; c < game.controls.size(); ++c) control(game.controls[c].second);
 }
 
-// The default benchmark log: the first full HELIOS game in shared/data.
+// The default benchmark log: the first full HELIOS game in data/ (tests/data/rcg/full links to it).
 std::string default_full_game_log();
 
 // False with `error` when the log cannot be read. `max_states` 0 = all.
