@@ -1,0 +1,637 @@
+#include "anim/tools/close_up_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "anim/ground_contact.hpp"
+#include "anim/local_to_model_job.hpp"
+
+namespace mc::anim::tools {
+
+const char* speed_band_name(int b) {
+  static const char* kNames[kSpeedBands] = {"stand (<0.5)", "0.5-1", "1-2", "2-3", "3-4", "4-5",
+                                            "5-6",          "6-7",   "7-8", "8-9", "9+"};
+  return b >= 0 && b < kSpeedBands ? kNames[b] : "?";
+}
+
+int speed_band(double v) {
+  if (v < 0.5) return 0;
+  if (v < 1.0) return 1;
+  return std::min(kSpeedBands - 1, 1 + static_cast<int>(v));
+}
+
+double band_mean(const CloseUpReport& r, int band) { return r.grounded_mps[static_cast<std::size_t>(band)].mean(); }
+
+namespace {
+
+using namespace close_up;
+constexpr float kRadToDeg = 57.29577951308232f;
+
+enum Group { kLegs = 0, kArms, kTrunk, kHead };
+
+struct Box {
+  bool valid = false;
+  glm::vec3 c{0}, h{0};  // centre and half extents, joint local space
+  int axis = 1;          // the longest axis (the centreline)
+  float half_width = 0;  // the larger of the other two half extents
+};
+
+// Indices into the hello's skeleton, found by name.
+struct Rig {
+  int foot[2] = {-1, -1}, thigh[2] = {-1, -1}, shin[2] = {-1, -1}, hand[2] = {-1, -1};
+  int pelvis = -1, torso = -1;
+  std::vector<int> group;      // per joint
+  std::vector<int> first_dof;  // per joint
+  std::vector<Box> box;        // per joint
+
+  explicit Rig(const SkeletonDef& s) {
+    auto find = [&](const char* n) { return s.find(n); };
+    foot[0] = find("r_foot"); foot[1] = find("l_foot");
+    thigh[0] = find("r_thigh"); thigh[1] = find("l_thigh");
+    shin[0] = find("r_shin"); shin[1] = find("l_shin");
+    hand[0] = find("r_hand"); hand[1] = find("l_hand");
+    pelvis = find("pelvis"); torso = find("torso");
+    int d = 0;
+    for (const JointDef& j : s.joints) {
+      const std::string& n = j.name;
+      auto has = [&](const char* w) { return n.find(w) != std::string::npos; };
+      group.push_back(has("thigh") || has("shin") || has("foot") ? kLegs
+                      : has("arm") || has("hand")                 ? kArms
+                      : has("neck") || has("head")                ? kHead
+                                                                  : kTrunk);
+      first_dof.push_back(d);
+      d += static_cast<int>(j.dofs.size());
+      Box b;
+      if (j.segment.shape == SegmentShape::Box) {
+        b.valid = true;
+        b.c = glm::vec3(j.segment.center[0], j.segment.center[1], j.segment.center[2]);
+        b.h = 0.5f * glm::vec3(j.segment.size[0], j.segment.size[1], j.segment.size[2]);
+        b.axis = b.h.x >= b.h.y && b.h.x >= b.h.z ? 0 : b.h.y >= b.h.z ? 1 : 2;
+        b.half_width = std::max(b.h[(b.axis + 1) % 3], b.h[(b.axis + 2) % 3]);
+      }
+      box.push_back(b);
+    }
+  }
+};
+
+struct FootGeom {
+  float lowest = 1e9f;
+  glm::vec3 contact_ls{0};
+  bool grounded = false;
+};
+
+// One player on one drawn frame, in world space: X = field x, Y up, Z = field y.
+struct Geom {
+  bool active = false;
+  float x = 0, y = 0;
+  std::vector<glm::mat4> world;
+  std::vector<glm::mat3> rot;  // local rotations; the pelvis's with the heading
+  FootGeom feet[2];
+};
+
+void pose(const SkeletonDef& s, const Rig& rig, const PlayerPose& p, Geom& g) {
+  const std::size_t n = s.joints.size();
+  g.world.resize(n);
+  g.rot.resize(n);
+  g.active = (p.state & state_bits::kStand) != 0;
+  g.x = p.x;
+  g.y = p.y;
+  const float h = p.heading * (3.14159265358979f / 180.0f);
+  const float c = std::cos(h), sn = std::sin(h);
+  glm::mat4 field(1.0f);
+  field[0] = glm::vec4(c, 0, sn, 0);
+  field[2] = glm::vec4(-sn, 0, c, 0);
+  field[3] = glm::vec4(p.x, 0, p.y, 1);
+  for (std::size_t j = 0; j < n; ++j) {
+    const JointDef& jd = s.joints[j];
+    const glm::mat3 r = joint_rotation(jd.dofs, &p.angles[static_cast<std::size_t>(rig.first_dof[j])]);
+    glm::mat4 local(r);
+    local[3] = glm::vec4(jd.offset_ls[0], jd.offset_ls[1], jd.offset_ls[2], 1.0f);
+    if (jd.parent < 0) {
+      local[3] += glm::vec4(0, p.z, 0, 0);
+      g.world[j] = field * local;
+      g.rot[j] = glm::mat3(field) * r;
+    } else {
+      g.world[j] = g.world[static_cast<std::size_t>(jd.parent)] * local;
+      g.rot[j] = r;
+    }
+  }
+  for (int f = 0; f < 2; ++f) {
+    FootGeom& fg = g.feet[f];
+    fg = FootGeom{};
+    const int j = rig.foot[f];
+    if (j < 0 || !rig.box[static_cast<std::size_t>(j)].valid) continue;
+    const Box& b = rig.box[static_cast<std::size_t>(j)];
+    const glm::mat4& w = g.world[static_cast<std::size_t>(j)];
+    glm::vec3 corner[4];
+    float hgt[4];
+    int k = 0;
+    for (float sx : {-1.0f, 1.0f})
+      for (float sz : {-1.0f, 1.0f}) {
+        corner[k] = b.c + glm::vec3(sx * b.h.x, -b.h.y, sz * b.h.z);
+        hgt[k] = (w * glm::vec4(corner[k], 1.0f)).y;
+        fg.lowest = std::min(fg.lowest, hgt[k]);
+        ++k;
+      }
+    glm::vec3 sum(0);
+    float wsum = 0;
+    for (int i = 0; i < 4; ++i) {
+      const float wt = std::max(0.0f, 1.0f - (hgt[i] - fg.lowest) / 0.01f);
+      sum += wt * corner[i];
+      wsum += wt;
+    }
+    fg.contact_ls = sum / wsum;
+    fg.grounded = fg.lowest < kGroundedBelowM;
+  }
+}
+
+float rotation_deg(const glm::mat3& a, const glm::mat3& b) {
+  float tr = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) tr += a[i][k] * b[i][k];
+  return std::acos(std::clamp(0.5f * (tr - 1.0f), -1.0f, 1.0f)) * kRadToDeg;
+}
+
+// Signed distance from a point (box local space) to a box: negative inside.
+float box_sd(const Box& b, const glm::vec3& p) {
+  const glm::vec3 q = glm::abs(p - b.c) - b.h;
+  const glm::vec3 out = glm::max(q, glm::vec3(0));
+  return std::sqrt(glm::dot(out, out)) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f);
+}
+
+// Closest distance between segments p1q1 and p2q2 (Ericson, Real-Time
+// Collision Detection, 5.1.9).
+float segment_distance(glm::vec3 p1, glm::vec3 q1, glm::vec3 p2, glm::vec3 q2) {
+  const glm::vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+  float s = 0, t = 0;
+  if (a <= 1e-9f && e <= 1e-9f) return glm::length(r);
+  if (a <= 1e-9f) {
+    t = std::clamp(f / e, 0.0f, 1.0f);
+  } else {
+    const float c = glm::dot(d1, r);
+    if (e <= 1e-9f) {
+      s = std::clamp(-c / a, 0.0f, 1.0f);
+    } else {
+      const float b = glm::dot(d1, d2), denom = a * e - b * b;
+      s = denom > 1e-9f ? std::clamp((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
+      t = (b * s + f) / e;
+      if (t < 0) { t = 0; s = std::clamp(-c / a, 0.0f, 1.0f); }
+      else if (t > 1) { t = 1; s = std::clamp((b - c) / a, 0.0f, 1.0f); }
+    }
+  }
+  return glm::length((p1 + d1 * s) - (p2 + d2 * t));
+}
+
+void centreline(const Rig& rig, const Geom& g, int j, glm::vec3& p, glm::vec3& q) {
+  const Box& b = rig.box[static_cast<std::size_t>(j)];
+  glm::vec3 e(0);
+  e[b.axis] = b.h[b.axis];
+  const glm::mat4& w = g.world[static_cast<std::size_t>(j)];
+  p = glm::vec3(w * glm::vec4(b.c - e, 1.0f));
+  q = glm::vec3(w * glm::vec4(b.c + e, 1.0f));
+}
+
+// Clearance of two boxes' centrelines less half the larger box width (< 0: too close).
+float clearance(const Rig& rig, const Geom& g, int a, int b) {
+  if (a < 0 || b < 0 || !rig.box[static_cast<std::size_t>(a)].valid || !rig.box[static_cast<std::size_t>(b)].valid)
+    return 1;
+  glm::vec3 p1, q1, p2, q2;
+  centreline(rig, g, a, p1, q1);
+  centreline(rig, g, b, p2, q2);
+  const float hw = std::max(rig.box[static_cast<std::size_t>(a)].half_width, rig.box[static_cast<std::size_t>(b)].half_width);
+  return segment_distance(p1, q1, p2, q2) - hw;
+}
+
+// How deep the hand's box reaches into a body box (m, 0 when outside).
+float hand_depth(const Rig& rig, const Geom& g, int hand, int body) {
+  if (hand < 0 || body < 0) return 0;
+  const Box& hb = rig.box[static_cast<std::size_t>(hand)];
+  const Box& bb = rig.box[static_cast<std::size_t>(body)];
+  if (!hb.valid || !bb.valid) return 0;
+  const glm::mat4& wh = g.world[static_cast<std::size_t>(hand)];
+  const glm::mat4& wb = g.world[static_cast<std::size_t>(body)];
+  const glm::vec3 ch(wh * glm::vec4(hb.c, 1.0f)), cb(wb * glm::vec4(bb.c, 1.0f));
+  if (glm::length(ch - cb) > glm::length(hb.h) + glm::length(bb.h)) return 0;
+  // Rigid transforms: the inverse rotation is the transpose.
+  const glm::mat3 rb_t = glm::transpose(glm::mat3(wb));
+  const glm::vec3 tb(wb[3]);
+  float depth = 0;
+  for (float sx : {-1.0f, 0.0f, 1.0f})
+    for (float sy : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f})
+      for (float sz : {-1.0f, 0.0f, 1.0f}) {
+        const glm::vec3 pw(wh * glm::vec4(hb.c + glm::vec3(sx, sy, sz) * hb.h, 1.0f));
+        depth = std::max(depth, -box_sd(bb, rb_t * (pw - tb)));
+      }
+  return depth;
+}
+
+std::string who(const PoseFrame& f, int k, int m, const PlayerPose& p, const char* what) {
+  char buf[160];
+  if (m > 1 && k > 0)
+    std::snprintf(buf, sizeof buf, "seq %u+%d/%d, %s %d%s%s", f.seq, k, m, p.side == Side::Left ? "left" : "right",
+                  p.unum, what[0] ? ", " : "", what);
+  else
+    std::snprintf(buf, sizeof buf, "seq %u, %s %d%s%s", f.seq, p.side == Side::Left ? "left" : "right", p.unum,
+                  what[0] ? ", " : "", what);
+  return buf;
+}
+
+}  // namespace
+
+CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldState>& states,
+                               const std::vector<PoseFrame>& produced, int draws_per_frame) {
+  CloseUpReport r;
+  const int m = std::max(1, draws_per_frame);
+  r.draws_per_frame = m;
+  const std::vector<PoseFrame>& frames = view.frames;
+  if (frames.empty()) return r;
+  const SkeletonDef& skel = view.skeleton;
+  const Rig rig(skel);
+  const int dofs = skel.dof_count();
+  const double frame_s = 0.001 * kFrameIntervalMs;
+  const double dt = frame_s / m;
+  const double per_frame = frame_s / dt;  // changes scaled to 50 ms
+
+  std::array<Geom, kMaxPlayers> prev, cur;
+  std::array<bool, kMaxPlayers> have_prev{};
+  // Cadence: touch-down times and the start of each player's current run.
+  std::array<std::vector<double>, kMaxPlayers> touch;
+  std::array<double, kMaxPlayers> run_start{};
+  std::array<bool, kMaxPlayers> in_run{};
+  auto flush_run = [&](std::size_t p, double end) {
+    if (in_run[p])
+      for (double t0 = run_start[p]; t0 + 2.0 <= end + 1e-9; t0 += 1.0) {
+        const auto n = std::count_if(touch[p].begin(), touch[p].end(), [&](double t) { return t >= t0 && t < t0 + 2.0; });
+        if (n > 0) r.cadence.values.push_back(0.5 * static_cast<double>(n));
+      }
+    touch[p].clear();
+    in_run[p] = false;
+  };
+  // Time at the limits (20 Hz frames).
+  std::vector<long> at_limit(skel.joints.size(), 0);
+  long limit_frames = 0;
+
+  float worst_step[4] = {0, 0, 0, 0};
+  PoseFrame drawn;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const int subs = i + 1 < frames.size() ? m : 1;
+    for (int k = 0; k < subs; ++k) {
+      const PoseFrame* fp = &frames[i];
+      if (k > 0) {
+        blend_like_clients(frames[i], frames[i + 1], static_cast<float>(k) / static_cast<float>(m), dofs, drawn);
+        fp = &drawn;
+      }
+      const PoseFrame& f = *fp;
+      ++r.frames;
+      const double t = (static_cast<double>(i) + static_cast<double>(k) / m) * frame_s;
+      // The 20 Hz interval the pair (previous drawn frame, this one) lies in.
+      const bool has_interval = k > 0 || i > 0;
+      const std::size_t lo = k > 0 ? i : (i > 0 ? i - 1 : 0);
+      for (std::size_t p = 0; p < kMaxPlayers; ++p) {
+        const PlayerPose& pp = f.players[p];
+        Geom& g = cur[p];
+        pose(skel, rig, pp, g);
+        if (!g.active) {
+          have_prev[p] = false;
+          flush_run(p, t);
+          continue;
+        }
+        ++r.player_frames;
+        // Nothing under the grass.
+        for (std::size_t j = 0; j < skel.joints.size(); ++j) {
+          const float low = segment_lowest_ms(skel.joints[j].segment, g.world[j]);
+          if (low < r.lowest_m) {
+            r.lowest_m = low;
+            r.lowest_where = who(f, k, m, pp, skel.joints[j].name.c_str());
+          }
+        }
+        // Time at the limits.
+        if (m == 1 || k == 0) {
+          ++limit_frames;
+          for (std::size_t j = 0; j < skel.joints.size(); ++j) {
+            const JointDef& jd = skel.joints[j];
+            for (std::size_t d = 0; d < jd.dofs.size(); ++d) {
+              const float a = pp.angles[static_cast<std::size_t>(rig.first_dof[j]) + d];
+              if (a <= jd.limits[d][0] + kAtLimitDeg || a >= jd.limits[d][1] - kAtLimitDeg) {
+                ++at_limit[j];
+                break;
+              }
+            }
+          }
+        }
+        // Clearance and hands, on every drawn frame.
+        {
+          const float ct = clearance(rig, g, rig.thigh[0], rig.thigh[1]);
+          const float cs = clearance(rig, g, rig.shin[0], rig.shin[1]);
+          const float cf = clearance(rig, g, rig.foot[0], rig.foot[1]);
+          float cx = 1;
+          for (int s = 0; s < 2; ++s) {
+            cx = std::min(cx, clearance(rig, g, rig.thigh[s], rig.shin[1 - s]));
+            cx = std::min(cx, clearance(rig, g, rig.thigh[s], rig.foot[1 - s]));
+            cx = std::min(cx, clearance(rig, g, rig.shin[s], rig.foot[1 - s]));
+          }
+          if (ct < 0) ++r.thighs_close;
+          if (cs < 0) ++r.shins_close;
+          if (cf < 0) ++r.feet_close;
+          if (cx < 0) ++r.crossed_close;
+          if ((ct < 0 || cs < 0 || cf < 0) && r.clearance_worst_where.empty())
+            r.clearance_worst_where = who(f, k, m, pp, ct < 0 ? "thighs" : cs < 0 ? "shins" : "feet");
+          float depth = 0;
+          for (int s = 0; s < 2; ++s)
+            for (int body : {rig.pelvis, rig.torso, rig.thigh[0], rig.thigh[1]})
+              depth = std::max(depth, hand_depth(rig, g, rig.hand[s], body));
+          if (depth > kHandDepthM) ++r.hands_inside;
+          if (depth > r.hand_depth_max_m) {
+            r.hand_depth_max_m = depth;
+            r.hand_worst_where = who(f, k, m, pp, "");
+          }
+        }
+        // Frame-to-frame figures: only within one 20 Hz interval without a
+        // teleport, with the player active at both of its ends.
+        bool pair = have_prev[p] && has_interval;
+        if (pair) {
+          const PlayerPose& a = frames[lo].players[p];
+          const PlayerPose& b = frames[std::min(lo + 1, frames.size() - 1)].players[p];
+          pair = (a.state & state_bits::kStand) && (b.state & state_bits::kStand) &&
+                 std::hypot(b.x - a.x, b.y - a.y) <= kTeleportM;
+        }
+        if (!pair) {
+          flush_run(p, t);
+          in_run[p] = true;
+          run_start[p] = t;
+        }
+        if (pair) {
+          const Geom& q = prev[p];
+          const double root_v = std::hypot(g.x - q.x, g.y - q.y) / dt;
+          const int band = speed_band(root_v);
+          for (int s = 0; s < 2; ++s) {
+            const FootGeom& fa = q.feet[s];
+            const FootGeom& fb = g.feet[s];
+            if (fb.grounded && !fa.grounded) touch[p].push_back(t);
+            if (!(fa.grounded && fb.grounded)) continue;
+            const int j = rig.foot[s];
+            const glm::vec3 pa(q.world[static_cast<std::size_t>(j)] * glm::vec4(fa.contact_ls, 1.0f));
+            const glm::vec3 pb(g.world[static_cast<std::size_t>(j)] * glm::vec4(fa.contact_ls, 1.0f));
+            const double v = std::hypot(pb.x - pa.x, pb.z - pa.z) / dt;
+            r.grounded_mps[static_cast<std::size_t>(band)].values.push_back(v);
+            if (v > 0.5) ++r.grounded_over_half[static_cast<std::size_t>(band)];
+            if (v > r.grounded_worst_mps) {
+              r.grounded_worst_mps = v;
+              char what[96];
+              std::snprintf(what, sizeof what, "%s foot, root %.1f m/s", s == 0 ? "right" : "left", root_v);
+              r.grounded_worst_where = who(f, k, m, pp, what);
+            }
+          }
+          // Joint changes by group.
+          float step[4] = {0, 0, 0, 0};
+          int worst[4] = {0, 0, 0, 0};
+          for (std::size_t j = 0; j < skel.joints.size(); ++j) {
+            const float d = rotation_deg(q.rot[j], g.rot[j]) * static_cast<float>(per_frame);
+            const int gr = rig.group[j];
+            if (d > step[gr]) { step[gr] = d; worst[gr] = static_cast<int>(j); }
+          }
+          Distribution* dist[4] = {&r.leg_step_deg, &r.arm_step_deg, &r.trunk_step_deg, &r.head_step_deg};
+          std::string* where[4] = {&r.leg_worst_where, &r.arm_worst_where, &r.trunk_worst_where, &r.head_worst_where};
+          for (int gr = 0; gr < 4; ++gr) {
+            if (step[gr] > worst_step[gr] || dist[gr]->values.empty()) {
+              worst_step[gr] = step[gr];
+              *where[gr] = who(f, k, m, pp, skel.joints[static_cast<std::size_t>(worst[gr])].name.c_str());
+            }
+            dist[gr]->values.push_back(step[gr]);
+          }
+          if (step[kLegs] > 50) ++r.legs_over_50;
+          if (step[kLegs] > kLegStepDeg) ++r.legs_over_60;
+          if (step[kArms] > kArmStepDeg) ++r.arms_over_45;
+          if (step[kArms] > 50) ++r.arms_over_50;
+          if (step[kTrunk] > 45) ++r.trunk_over_45;
+          if (step[kHead] > 45) ++r.head_over_45;
+          // Ankle pops.
+          const glm::vec3 pel_a(q.world[0][3]), pel_b(g.world[0][3]);
+          for (int s = 0; s < 2; ++s) {
+            const auto j = static_cast<std::size_t>(rig.foot[s]);
+            const glm::vec3 aa(q.world[j][3]), ab(g.world[j][3]);
+            const double mv = glm::length(ab - aa) * per_frame;
+            const double rel = glm::length((ab - pel_b) - (aa - pel_a)) * per_frame;
+            r.ankle_step_max_m = std::max(r.ankle_step_max_m, mv);
+            if (mv > kAnklePopM || rel > kAnklePopRelM) ++r.ankle_pops;
+          }
+          // Floating.
+          const float low = std::min(g.feet[0].lowest, g.feet[1].lowest);
+          if (low > kFloatAboveM && root_v < kFloatSlowerMps) {
+            ++r.floating;
+            if (low > r.floating_max_m) {
+              r.floating_max_m = low;
+              r.floating_where = who(f, k, m, pp, "");
+            }
+          }
+        }
+        std::swap(prev[p], cur[p]);
+        have_prev[p] = true;
+      }
+    }
+  }
+  const double end_t = static_cast<double>(frames.size()) * frame_s;
+  for (std::size_t p = 0; p < kMaxPlayers; ++p) flush_run(p, end_t);
+  // Time at the limits.
+  for (std::size_t j = 0; j < skel.joints.size(); ++j) {
+    const double share = limit_frames > 0 ? static_cast<double>(at_limit[j]) / static_cast<double>(limit_frames) : 0.0;
+    if (static_cast<int>(j) == rig.foot[0] || static_cast<int>(j) == rig.foot[1])
+      r.ankle_limit_share = std::max(r.ankle_limit_share, share);
+    if (share > r.worst_limit_share) {
+      r.worst_limit_share = share;
+      r.worst_limit_joint = skel.joints[j].name;
+    }
+  }
+  // Root at cycles and joint limits (the animator's output: the encoder clamps).
+  for (const PoseFrame& f : frames) {
+    const std::size_t si = f.seq / 2;
+    if (f.substep != 0 || si >= states.size()) continue;
+    for (std::size_t p = 0; p < kMaxPlayers; ++p)
+      if (states[si].players[p].active())
+        r.root_error_m.values.push_back(
+            std::hypot(f.players[p].x - states[si].players[p].x, f.players[p].y - states[si].players[p].y));
+  }
+  for (const PoseFrame& f : produced)
+    for (const PlayerPose& pp : f.players) {
+      std::size_t k = 0;
+      for (const JointDef& j : skel.joints)
+        for (std::size_t d = 0; d < j.dofs.size(); ++d, ++k)
+          if (pp.angles[k] < j.limits[d][0] - 0.01f || pp.angles[k] > j.limits[d][1] + 0.01f) ++r.limit_violations;
+    }
+  // Kicks at contact_time_ms.
+  const std::uint32_t seq0 = frames[0].seq;
+  double worst_kick = 0;
+  for (const proto::KickEvent& e : view.kicks) {
+    const std::uint64_t seq = e.contact_time_ms / kFrameIntervalMs;
+    if (seq < seq0 || seq - seq0 >= frames.size()) continue;
+    const std::size_t fi = seq - seq0;
+    const int slot = player_index(e.side, e.unum);
+    if (slot < 0) continue;
+    const PlayerPose& pp = frames[fi].players[static_cast<std::size_t>(slot)];
+    Geom g;
+    pose(skel, rig, pp, g);
+    const int j = rig.foot[e.foot == proto::Foot::Left ? 1 : 0];
+    const Box& b = rig.box[static_cast<std::size_t>(j)];
+    const glm::mat4& w = g.world[static_cast<std::size_t>(j)];
+    const BallPose& ball = frames[fi].ball;
+    const glm::vec3 bw(ball.x, ball.z, ball.y);
+    const glm::vec3 bl = glm::transpose(glm::mat3(w)) * (bw - glm::vec3(w[3]));
+    const double d = box_sd(b, bl) - view.ball_radius;
+    const glm::vec3 toe(w * glm::vec4(b.c + glm::vec3(b.h.x, 0, 0), 1.0f));
+    const double dt_toe = glm::length(toe - bw) - view.ball_radius;
+    r.kick_box_m.values.push_back(d);
+    r.kick_toe_m.values.push_back(dt_toe);
+    if (d < -kKickInsideM) ++r.kicks_inside;
+    const double bad = d < 0 ? -d : d;
+    if (bad > worst_kick) {
+      worst_kick = bad;
+      char what[64];
+      std::snprintf(what, sizeof what, "%s foot %+.3f m", e.foot == proto::Foot::Left ? "left" : "right", d);
+      r.kick_worst_where = who(frames[fi], 0, 1, pp, what);
+    }
+    if (fi > 0 && fi + 1 < frames.size()) {
+      const PlayerPose& a = frames[fi - 1].players[static_cast<std::size_t>(slot)];
+      const PlayerPose& c = frames[fi + 1].players[static_cast<std::size_t>(slot)];
+      r.step_in_m.values.push_back(std::hypot(pp.x - 0.5 * (a.x + c.x), pp.y - 0.5 * (a.y + c.y)));
+    }
+    ++r.kicks;
+  }
+  return r;
+}
+
+bool close_up_targets_hold(const CloseUpReport& r) {
+  bool ok = true;
+  for (int b = 0; b < kSpeedBands; ++b)
+    if (!r.grounded_mps[static_cast<std::size_t>(b)].values.empty())
+      ok = ok && band_mean(r, b) <= (b == 0 ? kStandMeanMps : kGroundedMeanMps);
+  ok = ok && r.kick_box_m.percentile(95) <= kKickP95M && r.kick_box_m.max() <= kKickMaxM && r.kicks_inside == 0;
+  ok = ok && r.leg_step_deg.max() <= kLegStepDeg && r.arm_step_deg.max() <= kArmStepDeg && r.ankle_pops == 0;
+  ok = ok && r.thighs_close == 0 && r.shins_close == 0 && r.feet_close == 0 && r.hands_inside == 0;
+  ok = ok && r.floating <= kMaxFloatingPlayerFrames * r.draws_per_frame;
+  ok = ok && (r.draws_per_frame > 1 || r.ankle_limit_share <= kAnkleLimitShare);
+  ok = ok && r.cadence.percentile(99) <= kCadenceP99;
+  ok = ok && r.root_error_m.max() <= 0.01 && r.limit_violations == 0;
+  ok = ok && r.lowest_m >= -kGroundTolerance && r.step_in_m.max() <= kMaxStepInTarget + 1e-3;
+  return ok;
+}
+
+std::string format_close_up(const std::vector<const CloseUpReport*>& reports) {
+  std::string out;
+  char line[512];
+  auto row = [&](const char* name, const char* target, auto value, auto pass) {
+    int n = std::snprintf(line, sizeof line, "%-44s", name);
+    for (const CloseUpReport* r : reports) {
+      char cell[64];
+      value(*r, cell, sizeof cell);
+      const int ok = pass(*r);
+      n += std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), " %18s %-4s", cell,
+                         ok < 0 ? "" : ok ? "ok" : "FAIL");
+    }
+    std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), "  %s\n", target);
+    out += line;
+  };
+  auto none = [](const CloseUpReport&) { return -1; };
+  {
+    int n = std::snprintf(line, sizeof line, "%-44s", "close-up metrics (decoded stream, hello skeleton)");
+    for (const CloseUpReport* r : reports) {
+      char h[32];
+      std::snprintf(h, sizeof h, "at %d Hz", 20 * r->draws_per_frame);
+      n += std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), " %18s %-4s", h, "");
+    }
+    std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), "  target\n");
+    out += line;
+  }
+  row("drawn frames / active player-frames", "", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%ld/%ld", r.frames, r.player_frames); }, none);
+  for (int b = 0; b < kSpeedBands; ++b) {
+    char name[80];
+    std::snprintf(name, sizeof name, "grounded foot, root %s m/s: mean, >0.5", speed_band_name(b));
+    row(name, b == 0 ? "mean <= 0.2 m/s" : "mean <= 0.5 m/s",
+        [b](const CloseUpReport& r, char* c, std::size_t s) {
+          const Distribution& d = r.grounded_mps[static_cast<std::size_t>(b)];
+          std::snprintf(c, s, "%.2f %3.0f%% n%zu", d.mean(),
+                        d.values.empty() ? 0.0 : 100.0 * static_cast<double>(r.grounded_over_half[static_cast<std::size_t>(b)]) / static_cast<double>(d.values.size()),
+                        d.values.size()); },
+        [b](const CloseUpReport& r) {
+          return r.grounded_mps[static_cast<std::size_t>(b)].values.empty() ||
+                 band_mean(r, b) <= (b == 0 ? kStandMeanMps : kGroundedMeanMps); });
+  }
+  row("  fastest grounded foot (m/s)", "", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.2f", r.grounded_worst_mps); }, none);
+  row("kick: foot box to ball surface mean (m)", "", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%+.4f", r.kick_box_m.mean()); }, none);
+  row("kick: foot box to ball p95 / max (m)", "p95 <= 0.02, max <= 0.03", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%+.3f/%+.3f", r.kick_box_m.percentile(95), r.kick_box_m.max()); },
+    [](const CloseUpReport& r) { return r.kick_box_m.percentile(95) <= kKickP95M && r.kick_box_m.max() <= kKickMaxM; });
+  row("kick: deepest inside / kicks > 2 cm inside", "none > 0.02 inside", [](const CloseUpReport& r, char* c, std::size_t s) {
+    const auto& v = r.kick_box_m.values;
+    std::snprintf(c, s, "%+.3f / %ld", v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()), r.kicks_inside); },
+    [](const CloseUpReport& r) { return r.kicks_inside == 0; });
+  row("kick: toe tip to ball mean / p95 / max (m)", "", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.3f/%.3f/%.3f", r.kick_toe_m.mean(), r.kick_toe_m.percentile(95), r.kick_toe_m.max()); }, none);
+  row("legs: change p99 / max (deg per 50 ms)", "max <= 60", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.1f/%.1f", r.leg_step_deg.percentile(99), r.leg_step_deg.max()); },
+    [](const CloseUpReport& r) { return r.leg_step_deg.max() <= kLegStepDeg; });
+  row("  player-frames over 50 / over 60", "", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%ld/%ld", r.legs_over_50, r.legs_over_60); }, none);
+  row("arms: change p99 / max (deg per 50 ms)", "max <= 45", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.1f/%.1f", r.arm_step_deg.percentile(99), r.arm_step_deg.max()); },
+    [](const CloseUpReport& r) { return r.arm_step_deg.max() <= kArmStepDeg; });
+  row("  player-frames over 45 / over 50", "", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%ld/%ld", r.arms_over_45, r.arms_over_50); }, none);
+  row("trunk: change p99 / max, frames > 45", "", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.1f/%.1f %ld", r.trunk_step_deg.percentile(99), r.trunk_step_deg.max(), r.trunk_over_45); }, none);
+  row("neck+head: change p99 / max, frames > 45", "", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.1f/%.1f %ld", r.head_step_deg.percentile(99), r.head_step_deg.max(), r.head_over_45); }, none);
+  row("ankle pops (foot-frames) / fastest (m)", "0", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%ld / %.2f", r.ankle_pops, r.ankle_step_max_m); },
+    [](const CloseUpReport& r) { return r.ankle_pops == 0; });
+  row("too close: thighs / shins / feet", "0 / 0 / 0", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%ld/%ld/%ld", r.thighs_close, r.shins_close, r.feet_close); },
+    [](const CloseUpReport& r) { return r.thighs_close == 0 && r.shins_close == 0 && r.feet_close == 0; });
+  row("  crossed pairs (thigh/shin/foot of the other leg)", "", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%ld", r.crossed_close); }, none);
+  row("hand > 2 cm inside body or thigh / deepest (m)", "0", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%ld / %.3f", r.hands_inside, r.hand_depth_max_m); },
+    [](const CloseUpReport& r) { return r.hands_inside == 0; });
+  row("floating player-frames / highest (m)", "<= 50 per 20 Hz", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%ld / %.3f", r.floating, r.floating_max_m); },
+    [](const CloseUpReport& r) { return r.floating <= kMaxFloatingPlayerFrames * r.draws_per_frame; });
+  row("time at a limit: worse ankle / worst joint", "ankle <= 2%", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.1f%%/%.1f%%", 100 * r.ankle_limit_share, 100 * r.worst_limit_share); },
+    [](const CloseUpReport& r) { return r.draws_per_frame > 1 ? -1 : r.ankle_limit_share <= kAnkleLimitShare ? 1 : 0; });
+  row("cadence p99 / max (steps/s, 2-s windows)", "p99 <= 4.5", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.2f/%.2f", r.cadence.percentile(99), r.cadence.max()); },
+    [](const CloseUpReport& r) { return r.cadence.percentile(99) <= kCadenceP99; });
+  row("root error at cycles max (m)", "<= 0.01", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.4f", r.root_error_m.max()); },
+    [](const CloseUpReport& r) { return r.root_error_m.max() <= 0.01; });
+  row("joint-limit violations (animator output)", "0", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%ld", r.limit_violations); }, [](const CloseUpReport& r) { return r.limit_violations == 0; });
+  row("lowest body point (m)", ">= -0.02", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.4f", r.lowest_m); }, [](const CloseUpReport& r) { return r.lowest_m >= -kGroundTolerance; });
+  row("step-in root offset on contact max (m)", "<= 0.30", [](const CloseUpReport& r, char* c, std::size_t s) {
+    std::snprintf(c, s, "%.3f", r.step_in_m.max()); },
+    [](const CloseUpReport& r) { return r.step_in_m.max() <= kMaxStepInTarget + 1e-3; });
+  for (const CloseUpReport* r : reports) {
+    char buf[1024];
+    std::snprintf(buf, sizeof buf,
+                  "  at %d Hz worst: grounded %s | kick %s | leg %s | arm %s | trunk %s | head %s | clearance %s | "
+                  "hand %s | float %s | limit joint %s | lowest %s\n",
+                  20 * r->draws_per_frame, r->grounded_worst_where.c_str(), r->kick_worst_where.c_str(),
+                  r->leg_worst_where.c_str(), r->arm_worst_where.c_str(), r->trunk_worst_where.c_str(),
+                  r->head_worst_where.c_str(), r->clearance_worst_where.c_str(), r->hand_worst_where.c_str(),
+                  r->floating_where.c_str(), r->worst_limit_joint.c_str(), r->lowest_where.c_str());
+    out += buf;
+  }
+  return out;
+}
+
+}  // namespace mc::anim::tools
