@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "server/relay/listener.hpp"
+#include "server/relay/log.hpp"
 #include "server/relay/websocket_session.hpp"
 
 namespace net = boost::asio;
@@ -39,6 +40,11 @@ bool RelayServer::start(std::string& error) {
     iocs_.push_back(std::make_unique<net::io_context>(1));
     guards_.push_back(net::make_work_guard(*iocs_.back()));
     iocs.push_back(iocs_.back().get());
+  }
+  for (const auto& file : files_.missing_page_files()) {
+    log_event("web_page_incomplete", files_.root() + "/" + file +
+                                         " is missing, so the page cannot start: run scripts/install-deps.sh "
+                                         "(or npm ci in web/), then reload the page");
   }
   listener_ = std::make_shared<Listener>(iocs, context_);
   if (!listener_->open({address, config_.port}, error)) return false;

@@ -13,6 +13,16 @@ StaticFiles::StaticFiles(const std::string& root) {
   root_ = ec ? root : canon.string();
 }
 
+std::vector<std::string> StaticFiles::missing_page_files() const {
+  static constexpr const char* kNeeded[] = {"index.html", "node_modules/three/build/three.module.js"};
+  std::vector<std::string> missing;
+  for (const char* rel : kNeeded) {
+    std::error_code ec;
+    if (!fs::is_regular_file(fs::path(root_) / rel, ec)) missing.emplace_back(rel);
+  }
+  return missing;
+}
+
 std::optional<std::string> url_decode(std::string_view in) {
   auto hex = [](char c) -> int {
     if (c >= '0' && c <= '9') return c - '0';

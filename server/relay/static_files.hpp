@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace mc::relay {
 
@@ -19,6 +20,11 @@ class StaticFiles {
   std::optional<std::string> resolve(std::string_view target) const;
 
   const std::string& root() const { return root_; }
+
+  // Files the page cannot start without that are not under the root (the
+  // page itself, three.js from npm), as paths relative to it. A server run
+  // before `npm ci` in web/ would otherwise serve a blank page and say nothing.
+  std::vector<std::string> missing_page_files() const;
 
  private:
   std::string root_;

@@ -27,6 +27,17 @@ class StaticFilesTest : public ::testing::Test {
   fs::path base_;
 };
 
+TEST_F(StaticFilesTest, NamesThePageFilesThatAreMissing) {
+  StaticFiles files((base_ / "web").string());
+  // No three.js: the page would be blank, so the server must say so.
+  EXPECT_EQ(files.missing_page_files(), std::vector<std::string>{"node_modules/three/build/three.module.js"});
+  fs::create_directories(base_ / "web" / "node_modules" / "three" / "build");
+  std::ofstream(base_ / "web" / "node_modules" / "three" / "build" / "three.module.js") << "export {}";
+  EXPECT_TRUE(files.missing_page_files().empty());
+  fs::remove(base_ / "web" / "index.html");
+  EXPECT_EQ(files.missing_page_files(), std::vector<std::string>{"index.html"});
+}
+
 TEST_F(StaticFilesTest, ServesFilesInsideTheRoot) {
   StaticFiles files((base_ / "web").string());
   auto index = files.resolve("/");

@@ -27,9 +27,9 @@ mkdirSync(OUT_DIR, { recursive: true });
 export const shot = (name) => path.join(OUT_DIR, `${name}.png`);
 
 // Starts the server; resolves { url, port, proc, stop() } once it prints its URL.
-export function startServer({ port = 0, args = [], timeoutMs = 20000 } = {}) {
+export function startServer({ port = 0, args = [], timeoutMs = 20000, web = WEB_DIR } = {}) {
   if (!SERVER || !existsSync(SERVER)) throw new Error(`matchcast-server not found (MATCHCAST_SERVER=${SERVER})`);
-  const proc = spawn(SERVER, ['--rcg', RCG, '--port', String(port), '--web', WEB_DIR, ...args],
+  const proc = spawn(SERVER, ['--rcg', RCG, '--port', String(port), '--web', web, ...args],
     // Run in the output folder: whatever the server writes (recordings) lands there.
     { stdio: ['ignore', 'pipe', 'pipe'], cwd: OUT_DIR });
   let out = '', err = '';
