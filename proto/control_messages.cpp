@@ -109,6 +109,7 @@ struct ToJson {
   json operator()(const TeamsUpdate& e) const {
     return {{"type", "teams"}, {"seq", e.seq}, {"left", team_json(e.left)}, {"right", team_json(e.right)}};
   }
+  json operator()(const DirectorCue& e) const { return director_cue_to_json(e); }
   json operator()(const FeedStatus& e) const {
     return {{"type", "feed"}, {"status", e.lost ? "lost" : "back"}, {"seq", e.seq},
             {"server_time_ms", e.server_time_ms}, {"detail", e.detail}};
@@ -215,6 +216,7 @@ ControlMessage parse(const json& j, const std::string& type) {
     e.right = stamina_from(j.at("right"));
     return e;
   }
+  if (type == "director") return director_cue_from_json(j);
   throw std::invalid_argument("unknown control message type \"" + type + "\"");
 }
 

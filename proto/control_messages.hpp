@@ -12,6 +12,7 @@
 #include <string_view>
 #include <variant>
 
+#include "proto/director_cue.hpp"
 #include "proto/hello.hpp"
 #include "proto/world_state.hpp"
 
@@ -106,9 +107,10 @@ struct ReachMapUpdate {
 // The "stamina" message of a state: every player's stamina, -1 for an empty slot.
 StaminaUpdate stamina_update(const WorldState& state);
 
+// DirectorCue ("director", the broadcast director's track) is in director_cue.hpp.
 using ControlMessage =
     std::variant<KickEvent, GoalEvent, PlayModeEvent, CardEvent, ScoreUpdate, TeamsUpdate, FeedStatus, ReachMapUpdate,
-                 StaminaUpdate>;
+                 StaminaUpdate, DirectorCue>;
 
 nlohmann::json control_to_json_value(const ControlMessage& message);
 std::string to_json(const ControlMessage& message);  // one line

@@ -10,6 +10,7 @@
 #include "proto/control_messages.hpp"
 #include "proto/frame_codec.hpp"
 #include "proto/hello.hpp"
+#include "server/director/director.hpp"
 #include "server/ingest/state_source.hpp"
 #include "server/relay/log.hpp"
 
@@ -164,6 +165,14 @@ bool LogFeed::play_once() {
   auto deadline = Clock::now();
   bool stamina_sent = false;
 
+  // The director's track (issue 20): a state's cue is decided with the same
+  // look-ahead as its frames, and goes out just before the frame it names,
+  // after that frame's other messages, renumbered like it.
+  director::DirectorConfig director_config;
+  director_config.lookahead_states = config_.anim.lookahead_cycles;
+  director::Director director(director_config);
+  std::vector<proto::DirectorCue> cues;
+
   auto publish = [&](std::vector<PoseFrame>& batch) {
     for (PoseFrame& f : batch) {
       deadline += interval;
@@ -184,6 +193,13 @@ bool LogFeed::play_once() {
         channel_->publish_control(proto::to_json(m));
       }
       timed_pending.erase(timed_pending.begin(), timed_pending.begin() + static_cast<std::ptrdiff_t>(sent));
+      std::size_t cued = 0;
+      for (; cued < cues.size() && cues[cued].seq <= f.seq; ++cued) {
+        proto::ControlMessage m{std::move(cues[cued])};
+        proto::shift_frames(m, shift);
+        channel_->publish_control(proto::to_json(m));
+      }
+      cues.erase(cues.begin(), cues.begin() + static_cast<std::ptrdiff_t>(cued));
       f.seq = next_seq_++;
       f.server_time_ms = unix_ms();
       bool key = false;
@@ -230,9 +246,11 @@ bool LogFeed::play_once() {
       timed_pending.emplace_back(state.time, proto::stamina_update(state));
       stamina_sent = true;
     }
+    director.push(state, cues);
     animator.push(state, frames, &events);
     if (!publish(frames)) return false;
   } while (next_state());
+  director.finish(cues);
   animator.finish(frames, &events);
   if (!publish(frames)) return false;
 
