@@ -1,5 +1,7 @@
 #include "server/app/feed_control.hpp"
 
+#include "server/relay/log.hpp"
+
 namespace mc::app {
 
 bool FeedControl::add(const std::string& channel, const FeedConfig& config, std::string& error) {
@@ -40,7 +42,13 @@ bool FeedControl::control(const std::string& action, const std::string& channel,
       return true;
     }
     auto feed = std::make_unique<LogFeed>(e.config, channels_->open(channel));
-    if (!feed->start(message)) return false;
+    std::string error;
+    if (!feed->start(error)) {
+      // The error names the log's path: the operator finds it in the log.
+      relay::log_event("feed_start_failed", channel + ": " + error);
+      message = "feed on '" + channel + "' could not start (see the server log)";
+      return false;
+    }
     e.feed = std::move(feed);
     message = "feed on '" + channel + "' started";
     return true;

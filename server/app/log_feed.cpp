@@ -10,6 +10,7 @@
 #include "proto/control_messages.hpp"
 #include "proto/frame_codec.hpp"
 #include "proto/hello.hpp"
+#include "proto/match_id.hpp"
 #include "server/director/director.hpp"
 #include "server/ingest/state_source.hpp"
 #include "server/relay/log.hpp"
@@ -75,7 +76,10 @@ bool LogFeed::start(std::string& error) {
       return false;
     }
   }
-  hello_ = make_hello(first, source->params(), config_.keyframe_interval, config_.log_path);
+  // Spectators learn the game's name, never the log's path on this machine
+  // or the address of a live rcssserver.
+  hello_ = make_hello(first, source->params(), config_.keyframe_interval,
+                      proto::match_id_of_source(config_.log_path, first.left.name, first.right.name));
   channel_->set_hello(hello_);
   channel_->set_feed_state(relay::FeedState::Live);
   // A live session cannot be replayed from its start: keep the one opened
@@ -119,7 +123,8 @@ void LogFeed::announce_feed(bool lost, const std::string& detail) {
   status.lost = lost;
   status.seq = next_seq_ ? next_seq_ - 1 : 0;
   status.server_time_ms = unix_ms();
-  status.detail = detail;
+  // The detail names the rcssserver's address: it goes to the log only.
+  status.detail = lost ? "no data from the game server; reconnecting" : "the game server is back";
   channel_->publish_control(proto::to_json(proto::ControlMessage{status}));
   relay::log_event(lost ? "feed_lost" : "feed_back", config_.log_path + ": " + detail);
 }

@@ -3,9 +3,22 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "server/relay/log.hpp"
+
 namespace fs = std::filesystem;
 
 namespace mc::replay {
+namespace {
+
+// The reader's errors name the file on this machine: they go to the log,
+// the spectator (who asked for a time shift) learns only that it failed.
+std::nullptr_t unreadable(const std::string& channel, std::string& error) {
+  relay::log_event("timeshift_failed", channel + ": " + error);
+  error = "the recording of '" + channel + "' cannot be read";
+  return nullptr;
+}
+
+}  // namespace
 
 bool valid_recording_name(const std::string& name) {
   if (name.empty() || name.size() > 200 || name.front() == '.') return false;
@@ -66,13 +79,13 @@ std::shared_ptr<relay::ReplaySource> ReplayCatalog::open_timeshift(const std::st
       live.reader = std::make_unique<record::RecordingReader>();
       if (!live.reader->open(path, error)) {
         live.reader.reset();
-        return nullptr;
+        return unreadable(channel, error);
       }
     }
     PoseFrame f;
-    if (!live.reader->refresh(error)) return nullptr;
+    if (!live.reader->refresh(error)) return unreadable(channel, error);
     while (live.reader->next(f, error)) live.summary.note(f);
-    if (!error.empty()) return nullptr;
+    if (!error.empty()) return unreadable(channel, error);
     if (live.summary.empty) {
       error = "the recording of '" + channel + "' holds no frames yet";
       return nullptr;
@@ -81,7 +94,7 @@ std::shared_ptr<relay::ReplaySource> ReplayCatalog::open_timeshift(const std::st
     summary = live.summary;
   }
   auto reader = std::make_unique<record::RecordingReader>();
-  if (!reader->open((fs::path(dir_) / name).string(), error)) return nullptr;
+  if (!reader->open((fs::path(dir_) / name).string(), error)) return unreadable(channel, error);
   auto player = std::make_shared<ReplayPlayer>(executor, name, std::move(reader), std::move(summary),
                                                /*follow=*/true);
   player->start();

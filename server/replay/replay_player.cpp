@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "proto/control_messages.hpp"
+#include "proto/match_id.hpp"
 
 namespace mc::replay {
 namespace {
@@ -60,7 +61,8 @@ ReplayPlayer::ReplayPlayer(boost::asio::any_io_executor executor, std::string na
       channel_(std::make_shared<relay::Channel>("replay:" + name_)),
       encoder_(reader_->hello().skeleton),
       follow_(follow) {
-  channel_->set_hello(reader_->hello_json());
+  // A recording made before match_ids were public may name a server path.
+  channel_->set_hello(proto::hello_without_paths(reader_->hello_json()));
   channel_->set_feed_state(relay::FeedState::Live);
 }
 

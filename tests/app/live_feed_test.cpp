@@ -48,6 +48,8 @@ TEST(LiveFeed, BroadcastsAMonitorFeedAndTellsSpectatorsWhenItIsLost) {
   ASSERT_TRUE(proto::hello_from_json(*first.at(0).bytes, hello, error)) << error;
   EXPECT_EQ(hello.left.name, "HELIOS_A");
   EXPECT_EQ(hello.right.name, "HELIOS_B");
+  // The game by its teams, not by the rcssserver's address.
+  EXPECT_EQ(hello.match_id, "HELIOS_A-vs-HELIOS_B");
 
   // Two seconds of the live game, then the feeder goes away.
   std::this_thread::sleep_for(std::chrono::seconds(2));
@@ -59,7 +61,10 @@ TEST(LiveFeed, BroadcastsAMonitorFeedAndTellsSpectatorsWhenItIsLost) {
     for (const auto& m : collector->snapshot()) {
       proto::ControlMessage c;
       if (!m.binary() && proto::control_from_json(*m.bytes, c, error))
-        if (auto* f = std::get_if<proto::FeedStatus>(&c)) lost = lost || f->lost;
+        if (auto* f = std::get_if<proto::FeedStatus>(&c)) {
+          lost = lost || f->lost;
+          EXPECT_EQ(f->detail.find("127.0.0.1"), std::string::npos) << f->detail;
+        }
     }
   }
   feed.stop();
