@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "anim/body_frame.hpp"
+#include "anim/portable_math.hpp"
 
 namespace mc::anim {
 namespace {
@@ -79,13 +80,13 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
   s.foot_weight[sup] = std::min(sw, s.weight > 0 ? 1.0f : 0.0f);
   s.foot_x[sup] = m.support_x;
   s.foot_y[sup] = m.support_y;
-  s.foot_h[sup] = dims::kAnkleHeight + (tau < plant_at ? 0.08f * std::sin(kPi * sw) : 0.0f);
+  s.foot_h[sup] = dims::kAnkleHeight + (tau < plant_at ? 0.08f * pm::sin(kPi * sw) : 0.0f);
   s.foot_yaw[sup] = heading;
   s.foot_pitch[sup] = 0;
   s.planted[sup] = tau >= plant_at - 1e-4f;
   // After contact, once the 2D player has run on past the support foot's
   // reach, locomotion takes that foot back (it steps off, it is not dragged).
-  if (tau > 0 && std::hypot(m.support_x - root_x, m.support_y - root_y) > 0.45f) {
+  if (tau > 0 && pm::hypot(m.support_x - root_x, m.support_y - root_y) > 0.45f) {
     s.planted[sup] = false;
     s.foot_weight[sup] = 0;
   }

@@ -7,6 +7,7 @@
 #include "anim/kick_planner.hpp"
 #include "anim/motion_source.hpp"
 #include "anim/player_animation.hpp"
+#include "anim/portable_math.hpp"
 
 namespace mc::anim {
 namespace {
@@ -77,12 +78,12 @@ float Animator::smoothed_heading(std::uint64_t pos, int slot) const {
     const PlayerState& p = state_at(j).players[i];
     if (p.active() != c.active()) continue;
     const double wt = w + 1 - std::abs(k);
-    sx += wt * std::cos(p.body * kDeg);
-    sy += wt * std::sin(p.body * kDeg);
+    sx += wt * pm::cos(p.body * kDeg);
+    sy += wt * pm::sin(p.body * kDeg);
   }
   // Opposite headings cancel: fall back to the cycle's own heading.
-  if (std::hypot(sx, sy) < 0.25) return static_cast<float>(c.body);
-  return static_cast<float>(std::atan2(sy, sx) / kDeg);
+  if (pm::hypot(sx, sy) < 0.25) return static_cast<float>(c.body);
+  return static_cast<float>(pm::atan2(sy, sx) / kDeg);
 }
 
 void Animator::push(const WorldState& state, std::vector<PoseFrame>& out, std::vector<AnimEvent>* events) {
@@ -151,7 +152,7 @@ void Animator::plan_actions(std::uint64_t pos, int slot) {
       // The bits say kick; the geometry must agree (some feeds lose the
       // fault bit): the ball was within the player's kickable distance.
       const double reach = params_.type(q.type).kickable_distance(params_.ball_size()) + 0.25;
-      if (std::hypot(sp.ball.x - q.x, sp.ball.y - q.y) > reach) continue;
+      if (pm::hypot(sp.ball.x - q.x, sp.ball.y - q.y) > reach) continue;
       const double contact = (static_cast<double>(k) - 0.5) * step_s;
       if (ctx.motion_active && merge_kick(ctx.motion, contact, k)) continue;
       KickPlanInput in;
@@ -175,7 +176,7 @@ void Animator::plan_actions(std::uint64_t pos, int slot) {
       in.ball_radius = static_cast<float>(params_.ball_size());
       in.contact_time_s = contact;
       in.prepare_s = prepare_s;
-      in.speed = static_cast<float>(std::hypot(p.x - q.x, p.y - q.y) / step_s);
+      in.speed = static_cast<float>(pm::hypot(p.x - q.x, p.y - q.y) / step_s);
       ctx.motion = plan_kick(in);
       ctx.motion.last_kick_pos = k;
       ctx.motion_active = true;

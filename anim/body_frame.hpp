@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+#include "anim/portable_math.hpp"
+
 namespace mc::anim {
 
 inline constexpr float kPi = 3.14159265358979f;
@@ -43,8 +45,8 @@ struct BodyFrame {
 
   BodyFrame() = default;
   BodyFrame(float px, float py, float heading_deg)
-      : x(px), y(py), heading(heading_deg), c(std::cos(heading_deg * kDeg)),
-        s(std::sin(heading_deg * kDeg)) {}
+      : x(px), y(py), heading(heading_deg), c(pm::cos(heading_deg * kDeg)),
+        s(pm::sin(heading_deg * kDeg)) {}
 
   // Field point (fx, fy) -> body (forward X, right Z).
   void to_body(float fx, float fy, float& bx, float& bz) const {

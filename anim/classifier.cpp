@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "anim/body_frame.hpp"
+#include "anim/portable_math.hpp"
 
 namespace mc::anim {
 
@@ -18,7 +19,7 @@ Action classify_raw(const ClassifyInput& in, const ClassifyParams& p) {
   const PlayerState& c = *in.cur;
   if (!c.active()) return Action::Disconnected;
   if (in.prev != nullptr && in.prev->active()) {
-    const double jump = std::hypot(c.x - in.prev->x, c.y - in.prev->y);
+    const double jump = pm::hypot(c.x - in.prev->x, c.y - in.prev->y);
     const bool moved_cmd = c.counters.count > 0 && c.counters.move > in.prev->counters.move;
     if (jump > p.teleport_m || (moved_cmd && jump > 0.05)) return Action::Teleport;
   }
@@ -48,12 +49,12 @@ Action classify_raw(const ClassifyInput& in, const ClassifyParams& p) {
     vx = (b.x - a.x) / span;
     vy = (b.y - a.y) / span;
   }
-  const double v = std::hypot(vx, vy);
+  const double v = pm::hypot(vx, vy);
   if (v < p.stand_speed) {
     const float turn = std::fabs(delta_deg(static_cast<float>(b.body), static_cast<float>(a.body)));
     return turn > p.turn_deg ? Action::Turn : Action::Stand;
   }
-  const float dir = static_cast<float>(std::atan2(vy, vx) / kDeg);
+  const float dir = static_cast<float>(pm::atan2(vy, vx) / kDeg);
   const float off = std::fabs(delta_deg(dir, static_cast<float>(c.body)));
   if (off > 125.0f) return Action::Backpedal;
   if (off > 55.0f) return Action::SideStep;

@@ -7,6 +7,7 @@
 
 #include "anim/human_skeleton.hpp"
 #include "anim/local_to_model_job.hpp"
+#include "anim/portable_math.hpp"
 
 namespace mc::anim {
 
@@ -52,7 +53,7 @@ float level_foot(const SkeletonDef& skeleton, std::span<glm::mat4> models, std::
     t[3] = glm::vec4(j.offset_ls[0], j.offset_ls[1], j.offset_ls[2], 1.0f);
     return parent * t;
   }();
-  const float level = std::atan2(-pt[0][1], pt[1][1]) * (180.0f / 3.14159265f);
+  const float level = pm::atan2(-pt[0][1], pt[1][1]) * (180.0f / 3.14159265f);
   const float lo = std::max(j.limits[0][0], lo_deg), hi = std::min(j.limits[0][1], hi_deg);
   float best_pitch = std::clamp(level, lo, hi);
   best = segment_lowest_ms(j.segment, model_at(best_pitch));
@@ -72,7 +73,7 @@ float level_foot(const SkeletonDef& skeleton, std::span<glm::mat4> models, std::
 
 float min_ankle_height(float pitch_deg) {
   constexpr float kDegToRad = 3.14159265f / 180.0f;
-  const float s = std::sin(pitch_deg * kDegToRad), c = std::cos(pitch_deg * kDegToRad);
+  const float s = pm::sin(pitch_deg * kDegToRad), c = pm::cos(pitch_deg * kDegToRad);
   // Sole corners in the foot's frame: (forward, down) = (kFootFront, -h), (-kFootBack, -h).
   const float toe = dims::kFootFront * s - dims::kAnkleHeight * c;
   const float heel = -dims::kFootBack * s - dims::kAnkleHeight * c;

@@ -5,6 +5,7 @@
 
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/portable_math.hpp"
 
 namespace mc::anim {
 
@@ -25,7 +26,7 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   m.kind = MotionKind::Kick;
   const BodyFrame body(in.root_x, in.root_y, in.heading);
   float dx = in.after_x - in.ball_x, dy = in.after_y - in.ball_y;
-  const float dn = std::hypot(dx, dy);
+  const float dn = pm::hypot(dx, dy);
   if (dn > 1e-3f) { dx /= dn; dy /= dn; }
   else { dx = body.c; dy = body.s; }  // a stopped ball: kick where the body faces
   m.dir_x = dx; m.dir_y = dy;
@@ -39,14 +40,14 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   // The sole turns towards the kick, up to 25 deg: with the pelvis twisted
   // into the kick, more would take the hip's yaw past its limit (and the
   // foot off the ball).
-  const float kick_deg = std::atan2(dy, dx) / kDeg;
+  const float kick_deg = pm::atan2(dy, dx) / kDeg;
   m.foot_yaw = wrap_deg(in.heading + clampf(delta_deg(kick_deg, in.heading), -25.0f, 25.0f));
   // The front of the foot (kStrikeLocal in the quality tool: 0.19 m ahead of
   // the ankle, 0.04 m below it), pitched 15 deg toes-down, meets the back of the ball.
   constexpr float kPitch = -15.0f * kDeg;
-  const float fx = 0.19f * std::cos(kPitch) + 0.04f * std::sin(kPitch);
-  const float fy = 0.19f * std::sin(kPitch) - 0.04f * std::cos(kPitch);
-  const float ux = std::cos(m.foot_yaw * kDeg), uy = std::sin(m.foot_yaw * kDeg);
+  const float fx = 0.19f * pm::cos(kPitch) + 0.04f * pm::sin(kPitch);
+  const float fy = 0.19f * pm::sin(kPitch) - 0.04f * pm::cos(kPitch);
+  const float ux = pm::cos(m.foot_yaw * kDeg), uy = pm::sin(m.foot_yaw * kDeg);
   const float sx = in.ball_x - dx * in.ball_radius, sy = in.ball_y - dy * in.ball_radius;
   m.contact_x = sx - ux * fx;
   m.contact_y = sy - uy * fx;
@@ -57,7 +58,7 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   // step-in below only moves the root on the contact frame).
   float sbx = bx - 0.12f, sbz = bz - side * 0.25f;
   const float hz = -side * dims::kHipHalfWidth;
-  const float sd = std::hypot(sbx, sbz - hz);
+  const float sd = pm::hypot(sbx, sbz - hz);
   if (sd > 0.4f) { sbx *= 0.4f / sd; sbz = hz + (sbz - hz) * 0.4f / sd; }
   // Pulled in, it must still stay on its own side of the kicking foot.
   float cbx, cbz;
@@ -74,21 +75,21 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   constexpr float kComfort = kComfortReach;
   for (int it = 0; it < 4; ++it) {
     const float kx = ax - ox, kz = az - (oz + side * dims::kHipHalfWidth);
-    const float kd = std::hypot(kx, kz);
+    const float kd = pm::hypot(kx, kz);
     if (kd > kComfort) { ox += kx * (kd - kComfort) / kd; oz += kz * (kd - kComfort) / kd; }
     const float qx = px - ox, qz = pz - (oz - side * dims::kHipHalfWidth);
-    const float qd = std::hypot(qx, qz);
+    const float qd = pm::hypot(qx, qz);
     if (qd > kComfort) { ox += qx * (qd - kComfort) / qd; oz += qz * (qd - kComfort) / qd; }
   }
-  const float on = std::hypot(ox, oz);
+  const float on = pm::hypot(ox, oz);
   if (on > kMaxStepIn) { ox *= kMaxStepIn / on; oz *= kMaxStepIn / on; }
   float lx, ly;
   body.to_field(ox, oz, lx, ly);
   m.lunge_x = lx - in.root_x;
   m.lunge_y = ly - in.root_y;
   // Pelvis as high as both legs allow at contact (down to a deep lunge).
-  const float hk = std::hypot(ax - ox, az - oz - side * dims::kHipHalfWidth);
-  const float hs = std::hypot(px - ox, pz - oz + side * dims::kHipHalfWidth);
+  const float hk = pm::hypot(ax - ox, az - oz - side * dims::kHipHalfWidth);
+  const float hs = pm::hypot(px - ox, pz - oz + side * dims::kHipHalfWidth);
   const float r2 = kPlanReach * kPlanReach;
   const float top_k = m.contact_h + std::sqrt(std::max(r2 - hk * hk, 0.09f)) + dims::kHipDrop;
   const float top_s = dims::kAnkleHeight + std::sqrt(std::max(r2 - hs * hs, 0.09f)) + dims::kHipDrop;

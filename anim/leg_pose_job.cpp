@@ -9,6 +9,7 @@
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/local_to_model_job.hpp"
+#include "anim/portable_math.hpp"
 #include "anim/two_bone_ik_job.hpp"
 
 namespace mc::anim {
@@ -64,10 +65,10 @@ bool LegPoseJob::Run() {
     const glm::vec3 fwd = local[0];   // where the sole's +X points, in shin space
     // Pitch of the sole's forward axis out of the shin's XZ plane: continuous
     // even when the hip cannot turn the knee as far as the sole is turned.
-    const float az = std::atan2(fwd.y, std::hypot(fwd.x, fwd.z)) / kDeg;
+    const float az = pm::atan2(fwd.y, pm::hypot(fwd.x, fwd.z)) / kDeg;
     const float rz[1] = {-az};
     const glm::vec3 right = joint_rotation(kZ, rz) * local[2];  // sole's +Z after undoing az
-    const float ax = std::atan2(-right.y, right.z) / kDeg;
+    const float ax = pm::atan2(-right.y, right.z) / kDeg;
     angles[ankle] = clampf(az, -60.0f, 35.0f);
     angles[ankle + 1] = clampf(ax, -30.0f, 30.0f);
   }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "anim/portable_math.hpp"
+
 namespace mc::anim {
 namespace {
 
@@ -10,7 +12,7 @@ constexpr float kDegToRad = 0.017453292519943295f;
 // Elementary rotation about one body axis (column-major glm).
 glm::mat3 axis_rotation(char axis, float deg) {
   const float r = deg * kDegToRad;
-  const float c = std::cos(r), s = std::sin(r);
+  const float c = pm::cos(r), s = pm::sin(r);
   glm::mat3 m(1.0f);
   switch (axis) {
     case 'x': m[1][1] = c; m[1][2] = s; m[2][1] = -s; m[2][2] = c; break;

@@ -6,6 +6,7 @@
 
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/portable_math.hpp"
 
 namespace mc::anim {
 namespace {
@@ -81,11 +82,11 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     s.feet[0].planted_frames = s.feet[1].planted_frames = 100;
   }
   const float dt = in.dt > 1e-4f ? in.dt : 0.05f;
-  const float ds = std::hypot(in.x - s.x, in.y - s.y);
+  const float ds = pm::hypot(in.x - s.x, in.y - s.y);
   // Turning on the spot counts as distance: the feet must step round.
   const float dturn = std::fabs(delta_deg(in.heading, s.heading)) * kDeg * 0.25f;
   const float v_inst = ds / dt;
-  s.speed += (v_inst - s.speed) * (1.0f - std::exp2(-dt / prm.speed_halflife_s));
+  s.speed += (v_inst - s.speed) * (1.0f - pm::exp2(-dt / prm.speed_halflife_s));
 
   // Stride from the smoothed speed, shortened by fatigue, and never so short
   // that this frame's advance would exceed the cadence cap.
@@ -109,7 +110,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     const FootState& f = s.feet[i];
     float bx, bz;
     body.to_body(f.x, f.y, bx, bz);
-    if (!f.planted || std::hypot(bx, bz - kSide[i] * 0.11f) > kRestTolerance ||
+    if (!f.planted || pm::hypot(bx, bz - kSide[i] * 0.11f) > kRestTolerance ||
         std::fabs(delta_deg(f.yaw, in.heading)) > kRestYawTolerance)
       settled = false;
   }
@@ -127,7 +128,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
 
   // Direction of travel for the landing spots.
   float ux = in.move_dx, uy = in.move_dy;
-  const float un = std::hypot(ux, uy);
+  const float un = pm::hypot(ux, uy);
   if (un > 1e-3f) { ux /= un; uy /= un; } else { ux = uy = 0; }
 
   // Lift-off: a foot's own stance lasts a fraction beta of the cycle (so each
@@ -149,10 +150,10 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     if (!f.planted || dphase <= 0) continue;
     float bx, bz;
     body.to_body(f.x, f.y, bx, bz);
-    const bool at_rest = std::hypot(bx, bz - kSide[i] * 0.11f) <= kRestTolerance &&
+    const bool at_rest = pm::hypot(bx, bz - kSide[i] * 0.11f) <= kRestTolerance &&
                          std::fabs(delta_deg(f.yaw, in.heading)) <= kRestYawTolerance;
     if (moving == 0 && at_rest) continue;
-    const bool too_far = f.planted_frames >= 2 && std::hypot(bx, bz - kSide[i] * dims::kHipHalfWidth) > 0.55f;
+    const bool too_far = f.planted_frames >= 2 && pm::hypot(bx, bz - kSide[i] * dims::kHipHalfWidth) > 0.55f;
     const bool twisted = f.planted_frames >= 2 && std::fabs(delta_deg(f.yaw, in.heading)) > 50.0f;
     const bool due = f.stance_phase + dphase >= beta || twisted;
     const bool other_ok = o.planted || (beta < 0.5f && (o.progress >= 0.4f || one_frame));
@@ -205,7 +206,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     if (kSide[i] * (tbz - obz) < 0.14f) tbz = obz + kSide[i] * 0.14f;
     // Within a comfortable reach of the hip.
     const float hz = kSide[i] * dims::kHipHalfWidth;
-    const float off = std::hypot(tbx, tbz - hz);
+    const float off = pm::hypot(tbx, tbz - hz);
     if (off > 0.5f) {
       tbx *= 0.5f / off;
       tbz = hz + (tbz - hz) * 0.5f / off;
@@ -223,7 +224,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     }
     body.to_field(rx, rz, f.x, f.y);
     f.yaw = lerp_deg(f.from_yaw, in.heading, w);
-    f.lift = (0.07f + 0.2f * run) * std::sin(kPi * p) * std::max(moving, 0.5f);
+    f.lift = (0.07f + 0.2f * run) * pm::sin(kPi * p) * std::max(moving, 0.5f);
     // Touch-down, unless this foot landed too recently for a human cadence:
     // then it hovers a frame longer just above its spot.
     const int min_frames = static_cast<int>(std::ceil(2.0f / (prm.hard_cadence_cap * dt) - 1e-3f));
@@ -258,7 +259,7 @@ void step_locomotion(LocomotionState& s, const LocomotionInput& in, const Locomo
     body.to_body(f.x, f.y, t.ankle_ms[0], t.ankle_ms[2]);
     t.ankle_ms[1] = dims::kAnkleHeight + f.lift;
     t.yaw_deg = -delta_deg(f.yaw, in.heading);
-    t.pitch_deg = f.planted ? 0.0f : 12.0f * std::sin(2.0f * kPi * std::min(f.progress, 1.0f)) * run;
+    t.pitch_deg = f.planted ? 0.0f : 12.0f * pm::sin(2.0f * kPi * std::min(f.progress, 1.0f)) * run;
     out.planted[i] = f.planted;
     // Only planted feet hold the pelvis down; a swinging foot may tuck.
     if (f.planted) pelvis = std::min(pelvis, pelvis_limit(t.ankle_ms, i));

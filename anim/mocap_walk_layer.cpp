@@ -5,6 +5,7 @@
 
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/portable_math.hpp"
 
 namespace mc::anim {
 
@@ -14,7 +15,7 @@ constexpr float kWalkMinSpeed = 0.3f, kWalkMaxSpeed = 1.5f, kWalkFadeS = 0.25f;
 
 void mocap_walk(PlayerAnim& ctx, const PlayerFrameInput& in, float heading, std::span<float> a, float& pelvis_h,
                 FootTarget feet[2], bool planted[2]) {
-  const float speed = std::hypot(in.move_dx, in.move_dy) / (2.0f * std::max(in.dt, 1e-3f));
+  const float speed = pm::hypot(in.move_dx, in.move_dy) / (2.0f * std::max(in.dt, 1e-3f));
   // Hysteresis on the speed band, so that a player near its edge does not
   // switch between the gaits every cycle.
   const bool on = ctx.walk_w > 0;
@@ -84,7 +85,7 @@ void mocap_walk(PlayerAnim& ctx, const PlayerFrameInput& in, float heading, std:
       // The capture's speed is not quite the 2D path's: the IK absorbs the
       // difference, and the swing that follows starts from the held spot.
       // Beyond 25 cm the leg lets go and waits for its next step.
-      if (std::hypot(hx - t.ankle_ms[0], hz - t.ankle_ms[2]) > 0.25f) {
+      if (pm::hypot(hx - t.ankle_ms[0], hz - t.ankle_ms[2]) > 0.25f) {
         hold = false;
         wp.planted[i] = false;
         ctx.walk_lockout[i] = true;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "anim/portable_math.hpp"
+
 namespace mc::anim {
 namespace {
 constexpr float kRadToDeg = 57.29577951308232f;
@@ -33,13 +35,13 @@ bool TwoBoneIKJob::Run() const {
   }
   // Law of cosines: |end - start|^2 = l1^2 + l2^2 + 2 l1 l2 cos(k).
   const float cos_k = std::clamp((d * d - l1 * l1 - l2 * l2) / (2 * l1 * l2), -1.0f, 1.0f);
-  const float k = hinge_sign * std::acos(cos_k);  // radians
+  const float k = hinge_sign * pm::acos(cos_k);  // radians
   // End joint in the start joint's frame, before the start joint rotates.
-  const float p0x = l2 * std::sin(k);
-  const float p0y = -l1 - l2 * std::cos(k);
+  const float p0x = l2 * pm::sin(k);
+  const float p0y = -l1 - l2 * pm::cos(k);
   // The twist (applied first, about Y) turns the hinge plane.
   const float c = twist_deg * kDegToRad;
-  const float p1x = p0x * std::cos(c), p1y = p0y, p1z = -p0x * std::sin(c);
+  const float p1x = p0x * pm::cos(c), p1y = p0y, p1z = -p0x * pm::sin(c);
   // Rx(b) must bring the z component to tz: p1z cos b + p1y sin b = tz.
   // Written as R cos(b + psi) with R = |(p1y, p1z)|, psi = atan2(-p1y, p1z);
   // the root near b = 0 is the one for a limb hanging down.
@@ -48,11 +50,11 @@ bool TwoBoneIKJob::Run() const {
   if (r > 1e-6f) {
     const float ratio = tz / r;
     if (ratio > 1.0f || ratio < -1.0f) ok = false;
-    b = std::acos(std::clamp(ratio, -1.0f, 1.0f)) - std::atan2(-p1y, p1z);
+    b = pm::acos(std::clamp(ratio, -1.0f, 1.0f)) - pm::atan2(-p1y, p1z);
   }
-  const float qx = p1x, qy = p1y * std::cos(b) - p1z * std::sin(b);
+  const float qx = p1x, qy = p1y * pm::cos(b) - p1z * pm::sin(b);
   // Rz(a) turns (qx, qy) onto (tx, ty); both have the same length.
-  float a = std::atan2(ty, tx) - std::atan2(qy, qx);
+  float a = pm::atan2(ty, tx) - pm::atan2(qy, qx);
   constexpr float kPi = 3.14159265358979f;
   while (a > kPi) a -= 2 * kPi;
   while (a < -kPi) a += 2 * kPi;

@@ -10,4 +10,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh --target matchcast-server
+scripts/build-wasm.sh   # the page opens dropped logs by itself (web/wasm/)
 exec build/server/app/matchcast-server --port "${PORT:-8080}" "$@"

@@ -6,6 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --test
 scripts/build.sh
+scripts/build-wasm.sh   # the page's log module (web/wasm/), which wasm_frames and web_local_log test
 jobs=$(nproc 2>/dev/null || echo 2)
 mkdir -p test-output
 
