@@ -56,7 +56,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   FeedConfig feed;
   unsigned max_queue_kb = 0, stall_ms = 0;
   std::string role = "standalone", edge_games, record_at = "origin";
-  unsigned nats_reconnect_ms = 0, origin_silence_ms = 0;
+  unsigned nats_reconnect_ms = 0, origin_silence_ms = 0, edge_on_demand_ms = 0;
   std::vector<std::string> details, anim_modes;
   std::string reach_channels, mocap_dir = source_dir + "/data/mocap", mocap_cache = "mocap-cache";
   po::options_description desc(
@@ -131,7 +131,10 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     ("nats-reconnect-wait-ms", po::value(&nats_reconnect_ms)->default_value(static_cast<unsigned>(o.nats.reconnect_wait.count())),
         "pause between NATS reconnect attempts")
     ("origin-silence-ms", po::value(&origin_silence_ms)->default_value(static_cast<unsigned>(o.nats.origin_silence.count())),
-        "an edge says 'feed lost' after this long without a message from the origin");
+        "an edge says 'feed lost' after this long without a message from the origin")
+    ("edge-on-demand-ms", po::value(&edge_on_demand_ms)->default_value(static_cast<unsigned>(o.nats.on_demand_wait.count())),
+        "an edge asked for a game it does not carry (/ws?channel=NAME) subscribes to it and waits this long "
+        "for it before closing the spectator with a reason; 0 = never subscribe on demand");
   // clang-format on
   try {
     po::variables_map vm;
@@ -193,6 +196,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   }
   o.nats.reconnect_wait = std::chrono::milliseconds(std::max(50u, nats_reconnect_ms));
   o.nats.origin_silence = std::chrono::milliseconds(std::max(200u, origin_silence_ms));
+  o.nats.on_demand_wait = std::chrono::milliseconds(edge_on_demand_ms);
   for (std::size_t pos = 0; pos < edge_games.size();) {
     auto comma = edge_games.find(',', pos);
     if (comma == std::string::npos) comma = edge_games.size();

@@ -1,5 +1,7 @@
 #include "server/nats/edge_sync.hpp"
 
+#include <algorithm>
+
 #include "proto/control_messages.hpp"
 #include "proto/frame_header.hpp"
 #include "proto/hello.hpp"
@@ -18,6 +20,22 @@ std::uint64_t unix_ms() {
 }
 
 }  // namespace
+
+void LagHistogram::record(std::uint64_t ms) {
+  std::size_t i = 0;
+  while (i < kBucketsMs.size() && ms > kBucketsMs[i]) ++i;
+  ++counts[i];
+  ++count;
+  sum_ms += ms;
+  last_ms = ms;
+}
+
+void LagHistogram::add(const LagHistogram& other) {
+  for (std::size_t i = 0; i < counts.size(); ++i) counts[i] += other.counts[i];
+  count += other.count;
+  sum_ms += other.sum_ms;
+  last_ms = std::max(last_ms, other.last_ms);
+}
 
 EdgeSync::EdgeSync(std::shared_ptr<relay::Channel> channel) : channel_(std::move(channel)) {}
 
@@ -74,6 +92,10 @@ void EdgeSync::apply(const Envelope& e) {
       }
       last_frame_seq_ = header.seq;
       channel_->publish_frame(std::string(e.payload), key);
+      if (header.server_time_ms) {
+        const std::uint64_t now = unix_ms();
+        stats_.lag.record(now > header.server_time_ms ? now - header.server_time_ms : 0);
+      }
       if (key) waiting_key_ = false;
       break;
     }

@@ -18,6 +18,7 @@
 // producer.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <deque>
@@ -31,6 +32,23 @@
 
 namespace mc::nats {
 
+// How far behind the origin an edge's frames are: from the frame header's
+// server_time_ms (stamped by the origin's feed as it encoded the frame) to
+// the frame's publish on the edge's channel; the relay's own
+// matchcast_frame_delay_ms then adds the write to each spectator. Across
+// machines it needs their clocks in step (NTP); a frame stamped in the
+// edge's future counts as 0 ms.
+struct LagHistogram {
+  static constexpr std::array<std::uint64_t, 12> kBucketsMs = {1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000};
+  std::array<std::uint64_t, kBucketsMs.size() + 1> counts{};  // per bucket, the last one past 5000 ms
+  std::uint64_t count = 0;
+  std::uint64_t sum_ms = 0;
+  std::uint64_t last_ms = 0;  // the latest frame's
+
+  void record(std::uint64_t ms);
+  void add(const LagHistogram& other);
+};
+
 struct EdgeSyncStats {
   std::uint64_t applied = 0;     // envelopes passed on to the channel
   std::uint64_t duplicates = 0;  // already applied (snapshot / live overlap)
@@ -38,6 +56,7 @@ struct EdgeSyncStats {
   std::uint64_t held_back = 0;   // deltas dropped while waiting for a keyframe
   std::uint64_t rejected = 0;    // malformed envelopes or payloads
   std::uint64_t resyncs = 0;     // snapshots applied
+  LagHistogram lag;              // live frames only (a snapshot's keyframe is old by design)
 };
 
 class EdgeSync {

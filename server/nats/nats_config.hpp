@@ -40,8 +40,17 @@ struct NatsConfig {
   // An edge with no message from the origin this long tells its spectators
   // "feed lost" (the origin stopped or was cut off). 20 frames/s normally.
   std::chrono::milliseconds origin_silence{3000};
-  // Most games one edge discovers when it carries "every game": a stranger
-  // publishing on the prefix cannot make it open channels without bound.
+  // A spectator asking an edge for a game it does not carry yet
+  // (/ws?channel=NAME) makes it subscribe to that game; with no hello from
+  // NATS this long, the spectator is closed with a reason (code 4404).
+  // 5 s: a game being played has its snapshot in the keyframe stream (read
+  // at once) or, without JetStream, repeats its hello every 10 s on the live
+  // subject; 5 s covers the first and a NATS reconnect or two, not always
+  // the second. 0 = no subscription on demand.
+  std::chrono::milliseconds on_demand_wait{5000};
+  // Most games one edge carries (announced, listed or asked for): neither a
+  // stranger publishing on the prefix nor spectators asking for made-up
+  // names can make it open channels without bound.
   std::size_t max_games = 64;
 
   bool origin() const { return role == Role::Origin || role == Role::Both; }

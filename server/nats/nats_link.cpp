@@ -2,6 +2,7 @@
 
 #include <nats/nats.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace mc::nats {
@@ -20,6 +21,7 @@ constexpr auto kCloseWait = std::chrono::seconds(3);
 }  // namespace
 
 struct NatsLink::Sub {
+  std::string subject;
   Handler handler;
   natsSubscription* sub = nullptr;
   std::mutex mutex;
@@ -140,6 +142,7 @@ bool NatsLink::publish(const std::string& subject, std::string_view data) {
 
 bool NatsLink::subscribe(const std::string& subject, Handler handler, std::string& error) {
   auto sub = std::make_unique<Sub>();
+  sub->subject = subject;
   sub->handler = std::move(handler);
   natsStatus s = natsConnection_Subscribe(&sub->sub, conn_, subject.c_str(), &Sub::on_message, sub.get());
   if (s == NATS_OK) s = natsSubscription_SetOnCompleteCB(sub->sub, &Sub::on_complete, sub.get());
@@ -151,6 +154,37 @@ bool NatsLink::subscribe(const std::string& subject, Handler handler, std::strin
   std::lock_guard lock(mutex_);
   subs_.push_back(std::move(sub));
   return true;
+}
+
+bool NatsLink::unsubscribe(const std::string& subject) {
+  std::unique_ptr<Sub> sub;
+  {
+    std::lock_guard lock(mutex_);
+    auto it = std::find_if(subs_.begin(), subs_.end(), [&](const auto& s) { return s->subject == subject; });
+    if (it == subs_.end()) return false;
+    sub = std::move(*it);
+    subs_.erase(it);
+  }
+  natsSubscription_Unsubscribe(sub->sub);
+  {
+    std::unique_lock lock(sub->mutex);
+    sub->cv.wait_for(lock, kCloseWait, [&] { return sub->complete; });
+  }
+  natsSubscription_Destroy(sub->sub);
+  return true;
+}
+
+NatsLink::Counters NatsLink::counters() const {
+  Counters c;
+  natsStatistics* stats = nullptr;
+  if (natsStatistics_Create(&stats) != NATS_OK) return c;
+  if (natsConnection_GetStats(conn_, stats) == NATS_OK) {
+    uint64_t in_msgs = 0, in_bytes = 0, out_msgs = 0, out_bytes = 0, reconnects = 0;
+    natsStatistics_GetCounts(stats, &in_msgs, &in_bytes, &out_msgs, &out_bytes, &reconnects);
+    c = {in_msgs, in_bytes, reconnects};
+  }
+  natsStatistics_Destroy(stats);
+  return c;
 }
 
 bool NatsLink::ensure_last_per_subject_stream(const std::string& stream, const std::string& subjects, int replicas,

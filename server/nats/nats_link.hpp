@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -51,6 +52,18 @@ class NatsLink {
   // Subscribes `handler` to `subject` (wildcards allowed), now and across
   // reconnects. Messages of one subscription arrive in order, on one thread.
   bool subscribe(const std::string& subject, Handler handler, std::string& error);
+  // Ends the subscription to exactly `subject`; when it returns, its handler
+  // is not running and will not run again (bounded wait). False: none.
+  bool unsubscribe(const std::string& subject);
+
+  // What the client has counted since open(): every message received
+  // (subscriptions and JetStream replies) and successful reconnects.
+  struct Counters {
+    std::uint64_t messages_in = 0;
+    std::uint64_t bytes_in = 0;
+    std::uint64_t reconnects = 0;
+  };
+  Counters counters() const;
 
   // Creates or updates the stream keeping the last message of each subject
   // in `subjects` (file storage, `replicas` copies). Needs a connection.

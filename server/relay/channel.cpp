@@ -107,6 +107,17 @@ void Channel::shutdown_subscribers() {
   for (auto& t : targets) t->shutdown();
 }
 
+void Channel::close_subscribers(std::uint16_t code, const std::string& reason) {
+  Audience a;
+  {
+    std::lock_guard lock(mutex_);
+    a = audience_locked();
+  }
+  for (auto& t : a.targets) t->close(code, reason);
+  for (const auto& g : a.groups)
+    for (const auto& s : *g.list) s->close(code, reason);
+}
+
 Channel::Audience Channel::audience_locked() {
   Audience a;
   a.targets.reserve(subscribers_.size());

@@ -27,6 +27,9 @@ class Subscriber {
   virtual void deliver(const Message& m) = 0;
   // The server is stopping: say goodbye (a close frame) and end.
   virtual void shutdown() {}
+  // The channel ends for a reason the spectator should read (a NATS edge
+  // found no such game): a close frame with `code` and `reason`.
+  virtual void close(std::uint16_t /*code*/, const std::string& /*reason*/) { shutdown(); }
 
   // A subscriber that lives on one single-threaded io_context (a spectator's
   // session) returns it. The channel then delivers to all the subscribers
@@ -64,6 +67,8 @@ class Channel {
   std::size_t subscribers() const;
   // Asks every subscriber to shut down (graceful server stop).
   void shutdown_subscribers();
+  // Asks every subscriber to close with `code` and `reason` (Subscriber::close).
+  void close_subscribers(std::uint16_t code, const std::string& reason);
 
   void set_feed_state(FeedState s) { feed_state_.store(static_cast<int>(s)); }
   FeedState feed_state() const { return static_cast<FeedState>(feed_state_.load()); }

@@ -29,6 +29,22 @@ void ChannelRegistry::remove(const std::string& name) {
   if (first_ == name) first_ = channels_.empty() ? std::string{} : channels_.begin()->first;
 }
 
+std::shared_ptr<Channel> ChannelRegistry::find_or_request(const std::string& name) {
+  if (auto ch = find(name)) return ch;
+  std::lock_guard lock(provider_mutex_);
+  return provider_ ? provider_->request(name) : nullptr;
+}
+
+void ChannelRegistry::set_provider(ChannelProvider* provider) {
+  std::lock_guard lock(provider_mutex_);
+  provider_ = provider;
+}
+
+std::string ChannelRegistry::provider_metrics() const {
+  std::lock_guard lock(provider_mutex_);
+  return provider_ ? provider_->metrics() : std::string{};
+}
+
 std::vector<std::shared_ptr<Channel>> ChannelRegistry::all() const {
   std::lock_guard lock(mutex_);
   std::vector<std::shared_ptr<Channel>> out;

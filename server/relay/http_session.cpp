@@ -189,7 +189,8 @@ void HttpSession::upgrade(http::request<http::string_body>&& req) {
     channel = replay->channel();
   } else {
     const std::string name = query_param(sv(req.target()), "channel");
-    channel = name.empty() ? context_.channels.default_channel() : context_.channels.find(name);
+    // A NATS edge may subscribe to a game it does not carry yet.
+    channel = name.empty() ? context_.channels.default_channel() : context_.channels.find_or_request(name);
     if (!channel) return send(text_response(req, http::status::not_found, "no such channel\n"));
   }
   beast::error_code ec;

@@ -67,6 +67,7 @@ std::string render_metrics(const RelayStats& s, const ChannelRegistry& channels)
   for (const auto& ch : channels.all())
     o << "matchcast_feed_up{channel=\"" << label(ch->name()) << "\",state=\"" << feed_state_name(ch->feed_state())
       << "\"} " << (ch->feed_state() == FeedState::Live ? 1 : 0) << '\n';
+  o << channels.provider_metrics();  // a NATS edge's own counters
   return o.str();
 }
 

@@ -34,6 +34,9 @@ class WebSocketSession::Tap : public Subscriber {
   void shutdown() override {
     if (auto s = session_.lock()) s->shutdown();
   }
+  void close(std::uint16_t code, const std::string& reason) override {
+    if (auto s = session_.lock()) s->close(code, reason);
+  }
 
  private:
   std::weak_ptr<WebSocketSession> session_;
@@ -87,6 +90,12 @@ void WebSocketSession::end_session() {
 void WebSocketSession::shutdown() {
   net::post(ws_.get_executor(), [self = shared_from_this()] {
     self->close_with(websocket::close_code::going_away, "server shutting down");
+  });
+}
+
+void WebSocketSession::close(std::uint16_t code, const std::string& reason) {
+  net::post(ws_.get_executor(), [self = shared_from_this(), code, reason] {
+    self->close_with(static_cast<websocket::close_code>(code), reason);
   });
 }
 
@@ -302,11 +311,13 @@ void WebSocketSession::on_stall_check(beast::error_code ec) {
   ws_.next_layer().close();
 }
 
-void WebSocketSession::close_with(websocket::close_code code, const char* reason) {
+void WebSocketSession::close_with(websocket::close_code code, std::string_view reason) {
   if (closing_ || !open_) return;
   closing_ = true;
   end_session();
-  ws_.async_close(websocket::close_reason(code, reason),
+  constexpr std::size_t kMaxReason = 123;  // RFC 6455: 125-byte payload, 2 of them the code
+  reason = reason.substr(0, kMaxReason);
+  ws_.async_close(websocket::close_reason(code, beast::string_view(reason.data(), reason.size())),
                   [self = shared_from_this()](beast::error_code) {});
 }
 

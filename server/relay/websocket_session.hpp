@@ -57,6 +57,9 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   void deliver(std::uint64_t tap_epoch, const Message& m);
   // Graceful stop: a close frame with "going away".
   void shutdown();
+  // A close frame with `code` and `reason` (cut to the 123 bytes a close
+  // frame holds), e.g. 4404 for a game a NATS edge could not find.
+  void close(std::uint16_t code, const std::string& reason);
 
  private:
   class Tap;
@@ -76,7 +79,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   void batch_sent(std::size_t bytes);
   void arm_stall_check();
   void on_stall_check(boost::beast::error_code ec);
-  void close_with(boost::beast::websocket::close_code code, const char* reason);
+  void close_with(boost::beast::websocket::close_code code, std::string_view reason);
   void end_session();
   void account_queue();
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -95,6 +96,34 @@ TEST_F(NatsEdgeSync, PassesTheOriginsMessagesInOrderWithTheSameBytes) {
   ASSERT_EQ(first.size(), 4u);
   EXPECT_EQ(*first[0].bytes, hello_);
   EXPECT_EQ(sync_->stats().applied, 5u);
+}
+
+TEST_F(NatsEdgeSync, MeasuresHowFarLiveFramesAreBehindTheOrigin) {
+  using namespace std::chrono;
+  const auto now = static_cast<std::uint64_t>(duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count());
+  auto stamped = [](std::uint32_t seq, bool key, std::uint64_t at) {
+    proto::FrameHeader h;
+    h.seq = seq;
+    h.keyframe = key;
+    h.server_time_ms = at;
+    std::string out;
+    proto::write_header(h, out);
+    return out + "body";
+  };
+  // A snapshot's keyframe is old by design: not counted.
+  const std::string snap = wrap_snapshot(1, hello_, stamped(101, true, now - 5000));
+  sync_->on_snapshot(&snap);
+  sync_->on_live(wrap(Kind::Delta, 2, stamped(102, false, now - 150)));
+  sync_->on_live(wrap(Kind::Delta, 3, stamped(103, false, now + 60000)));  // the edge's clock is behind: 0 ms
+  EXPECT_EQ(spectator_->summary(), (Seq{"H", "K101", "D102", "D103"}));
+  const LagHistogram lag = sync_->stats().lag;
+  EXPECT_EQ(lag.count, 2u);
+  EXPECT_EQ(lag.counts[0], 1u);  // <= 1 ms: the one from the future
+  EXPECT_EQ(lag.counts[7], 1u);  // (100, 200] ms
+  EXPECT_EQ(LagHistogram::kBucketsMs[7], 200u);
+  EXPECT_GE(lag.sum_ms, 150u);
+  EXPECT_LT(lag.sum_ms, 200u);
+  EXPECT_EQ(lag.last_ms, 0u);
 }
 
 TEST_F(NatsEdgeSync, AGapHoldsDeltasBackUntilTheNextKeyframe) {

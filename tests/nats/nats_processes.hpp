@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
@@ -56,6 +58,36 @@ inline std::uint16_t wait_for_port(ChildProcess& p, std::chrono::milliseconds ti
   const auto colon = line.rfind(':');
   if (line.empty() || colon == std::string::npos) return 0;
   return static_cast<std::uint16_t>(std::stoi(line.substr(colon + 1)));
+}
+
+// The body of `GET target` on 127.0.0.1:port, or "" (every step bounded).
+inline std::string http_get(std::uint16_t port, const std::string& target) {
+  namespace http = boost::beast::http;
+  try {
+    boost::asio::io_context io;
+    boost::beast::tcp_stream s(io);
+    s.expires_after(std::chrono::seconds(5));
+    s.connect({boost::asio::ip::make_address("127.0.0.1"), port});
+    http::request<http::empty_body> req{http::verb::get, target, 11};
+    req.set(http::field::host, "127.0.0.1");
+    http::write(s, req);
+    boost::beast::flat_buffer buf;
+    http::response<http::string_body> res;
+    http::read(s, buf, res);
+    return res.result() == http::status::ok ? res.body() : std::string();
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
+// The value of the Prometheus sample `series` (name with its labels, as
+// rendered: `matchcast_edge_games{state="ready"}`) in `text`, or -1.
+inline double metric(const std::string& text, const std::string& series) {
+  for (std::size_t at = 0; (at = text.find(series + ' ', at)) != std::string::npos; at += series.size()) {
+    if (at != 0 && text[at - 1] != '\n') continue;
+    return std::stod(text.substr(at + series.size() + 1));
+  }
+  return -1;
 }
 
 // The game the tests broadcast (the bundled one).

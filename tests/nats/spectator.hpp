@@ -31,7 +31,7 @@ struct Frame {
 // One spectator reading on its own thread until the connection ends.
 class Spectator {
  public:
-  explicit Spectator(std::uint16_t port) : client_(port) {
+  explicit Spectator(std::uint16_t port, const std::string& target = "/ws") : client_(port, target) {
     thread_ = std::thread([this] {
       try {
         for (;;) {
@@ -55,6 +55,11 @@ class Spectator {
           frames_.push_back(std::move(f));
         }
       } catch (const std::exception&) {
+        // The server's close frame, if it sent one.
+        std::lock_guard lock(mutex_);
+        close_code_ = client_.stream().reason().code;
+        close_reason_ = std::string(client_.stream().reason().reason.c_str());
+        closed_at_ = Clock::now();
         closed_ = true;
       }
     });
@@ -84,6 +89,19 @@ class Spectator {
   }
   bool closed() const { return closed_; }
   int bad() const { return bad_; }
+  // After closed(): the close frame's code and reason (0 and "": none), and when.
+  std::uint16_t close_code() {
+    std::lock_guard lock(mutex_);
+    return close_code_;
+  }
+  std::string close_reason() {
+    std::lock_guard lock(mutex_);
+    return close_reason_;
+  }
+  Clock::time_point closed_at() {
+    std::lock_guard lock(mutex_);
+    return closed_at_;
+  }
 
  private:
   mc::relay::testing::WsTestClient client_;
@@ -93,6 +111,9 @@ class Spectator {
   std::vector<Text> texts_;
   std::atomic<bool> closed_{false};
   std::atomic<int> bad_{0};
+  std::uint16_t close_code_ = 0;
+  std::string close_reason_;
+  Clock::time_point closed_at_{};
 };
 
 // Waits until `pred` or `timeout`; returns pred().
