@@ -5,6 +5,7 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
 export const CAMERA_MODES = [
+  { id: 'director', key: '0', label: 'Director' },
   { id: 'broadcast', key: '1', label: 'Broadcast' },
   { id: 'orbit', key: '2', label: 'Orbit' },
   { id: 'free', key: '3', label: 'Free' },
@@ -21,7 +22,9 @@ export class Cameras {
     this.camera = camera;
     this.dom = dom;
     this.field = field;
-    this.mode = 'broadcast';
+    // The director's cut (director.js) unless the spectator picks a camera.
+    this.mode = 'director';
+    this.director = null;
     this.goal = new THREE.Vector3();         // where the camera wants to be
     this.look = new THREE.Vector3(0, 0, 0);  // smoothed look-at point
     this.lookGoal = new THREE.Vector3();
@@ -87,6 +90,15 @@ export class Cameras {
     const aspect = cam.aspect || 1;
 
     switch (this.mode) {
+      case 'director': {
+        if (this.director) {
+          this.director.drive(cam, dt, view, aspect, this.field);
+          this.snap = false;
+          return null;
+        }
+        this._overview(aspect);
+        break;
+      }
       case 'broadcast': {
         // From the main stand on the +y side, level with the ball, zoomed.
         // A portrait screen sees little width: come closer and higher.

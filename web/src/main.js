@@ -11,6 +11,7 @@ import { Ball } from './scene/ball.js';
 import { Overlays } from './scene/overlays.js';
 import { makeKit } from './scene/kit.js';
 import { Cameras } from './cameras.js';
+import { Director } from './director.js';
 import { Hud } from './hud.js';
 import { KickSound } from './audio.js';
 import { bindControls, markCamera, updateReplayBar } from './controls.js';
@@ -37,6 +38,8 @@ let pitch = createPitch(field, stage.renderer);
 stage.scene.add(pitch);
 const ball = new Ball(stage.scene);
 const cameras = new Cameras(stage.camera, canvas, field);
+const director = new Director(() => timeshift);   // the server's director track drives the default camera
+cameras.director = director;
 let players = null;       // built from the hello's skeleton
 let overlays = null;
 let match = null;         // readHello() result
@@ -181,6 +184,7 @@ function startStream() {
 function onControl(msg) {
   counters.controls = (counters.controls ?? 0) + 1;
   lastControl = msg.type;
+  if (msg.type === 'director') { director.cue(msg); return; }
   if (events.control(msg)) return;
   if (msg.type === 'replay' && serverReplay) serverReplay.status(msg);
   else if (msg.type === 'reach_map') {
@@ -249,6 +253,7 @@ const app = {
   setCamera(id) {
     if ((id === 'player' || id === 'follow') && !selected) select(nearestToBall());
     cameras.setMode(id);
+    director.setEnabled(cameras.mode === 'director');
     markCamera(cameras.mode);
   },
   cameraMode: () => cameras.mode,
@@ -276,6 +281,7 @@ const app = {
   deselect() { select(null); },
   // Time shift over what the page has received (net/timeshift.js).
   replay(cmd, arg) {
+    director.userShift();
     if (serverReplay) {
       serverReplay.command(cmd, arg);
       if (cmd === 'seek' || cmd.endsWith('goal')) events.jump();
@@ -325,6 +331,9 @@ function frameLoop(now) {
   stage.resize();
   // Live frames come from the jitter buffer; a time-shifted picture from the
   // kept history. The buffer is sampled either way so that it stays current.
+  // The director first: a replay it starts or ends moves the time shift.
+  if (director.update(timeshift.active ? timeshift.pos : buffer.playhead, { streamSpeed: buffer.speed, now }).jumped)
+    events.jump();
   const live = players ? buffer.sample(now) : null;
   const shifted = timeshift.active;
   let s = shifted ? timeshift.sample(now) : live;
@@ -373,6 +382,7 @@ requestAnimationFrame(frameLoop);
 window.matchcast = Object.freeze({
   stats: () => ({
     ...counters, ...events.counts, connection, connects: stream?.connects ?? 0, camera: cameras.mode,
+    director: director.stats(),
     buffered: buffer.size, dropped: buffer.dropped, late: buffer.late, resyncs: buffer.resyncs,
     fps: fpsWindow.length, kbps, seq: view?.seq ?? null, time: view?.time ?? null,
     playMode: view?.playMode ?? null, selected, hello: !!match,
