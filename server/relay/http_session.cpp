@@ -9,6 +9,7 @@
 #include "server/relay/log.hpp"
 #include "server/relay/metrics.hpp"
 #include "server/relay/websocket_session.hpp"
+#include "server/relay/ws_handshake.hpp"
 
 namespace beast = boost::beast;
 namespace http = beast::http;
@@ -73,7 +74,6 @@ HttpSession::HttpSession(net::ip::tcp::socket&& socket, const HttpContext& conte
     : stream_(make_transport(std::move(socket), context)), context_(context) {}
 
 void HttpSession::run() {
-  stream_.set_owner(weak_from_this());
   if (!stream_.is_tls())
     return net::dispatch(stream_.get_executor(),
                          beast::bind_front_handler(&HttpSession::do_read, shared_from_this()));
@@ -166,6 +166,12 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
 void HttpSession::upgrade(http::request<http::string_body>&& req) {
   const std::string_view path = path_of(sv(req.target()));
   if (path != "/ws") return send(text_response(req, http::status::not_found, "no such stream\n"));
+  auto handshake = accept_upgrade(req);
+  if (!handshake.ok) {
+    auto res = text_response(req, handshake.status, handshake.error + "\n");
+    if (handshake.status == http::status::upgrade_required) res.set(http::field::sec_websocket_version, "13");
+    return send(std::move(res));
+  }
   const auto& origins = context_.config.allowed_origins;
   if (!origins.empty()) {
     const std::string origin(sv(req[http::field::origin]));
@@ -202,11 +208,14 @@ void HttpSession::upgrade(http::request<http::string_body>&& req) {
     ++context_.stats.refused_per_ip;
     return send(text_response(req, http::status::too_many_requests, "too many connections from your address\n"));
   }
+  // Beast has parsed the request; from here the session runs the
+  // connection itself on the bare socket (or the TLS stream).
   stream_.tcp().expires_never();
-  std::make_shared<WebSocketSession>(std::move(stream_), std::move(channel), context_.config,
-                                     context_.stats, std::move(ticket), std::move(replay),
-                                     context_.replays, context_.sessions)
-      ->run(std::move(req));
+  const auto early = beast::buffers_to_string(buffer_.data());
+  SpectatorLink link = stream_.is_tls() ? SpectatorLink(stream_.release_tls()) : SpectatorLink(stream_.release_socket());
+  std::make_shared<WebSocketSession>(std::move(link), std::move(channel), context_.config, context_.stats,
+                                     std::move(ticket), std::move(replay), context_.replays, context_.sessions)
+      ->run(std::move(handshake.response), early);
 }
 
 void HttpSession::handle_control(const http::request<http::string_body>& req) {

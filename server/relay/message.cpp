@@ -3,8 +3,12 @@
 namespace mc::relay {
 
 std::string websocket_frame_header(bool binary, std::size_t size) {
+  return websocket_frame_header_op(binary ? 0x2 : 0x1, size);
+}
+
+std::string websocket_frame_header_op(std::uint8_t opcode, std::size_t size) {
   std::string h;
-  h.push_back(static_cast<char>(0x80 | (binary ? 0x2 : 0x1)));  // FIN + opcode
+  h.push_back(static_cast<char>(0x80 | (opcode & 0x0F)));  // FIN + opcode
   if (size < 126) {
     h.push_back(static_cast<char>(size));
   } else if (size <= 0xFFFF) {

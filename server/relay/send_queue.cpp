@@ -28,23 +28,28 @@ bool SendQueue::push(Message m) {
 void SendQueue::drop_queued_deltas() {
   // A keyframe still queued is followed by deltas that are now gone, so it is
   // dropped as well: the client resumes at the next keyframe, consistently.
-  auto keep = [](const Message& m) { return m.kind == Message::Kind::Control; };
+  auto keep = [](const Message& m) { return m.kind == Message::Kind::Control || m.kind == Message::Kind::Session; };
   std::size_t kept_bytes = 0;
-  std::deque<Message> kept;
+  std::size_t out = 0;
   for (auto& m : items_) {
     if (keep(m)) {
       kept_bytes += m.size();
-      kept.push_back(std::move(m));
+      items_[out++] = std::move(m);
     } else {
       ++dropped_;
     }
   }
-  items_ = std::move(kept);
+  items_.resize(out);
   bytes_ = kept_bytes;
 }
 
 void SendQueue::take_all(std::vector<Message>& batch) {
-  for (auto& m : items_) batch.push_back(std::move(m));
+  // The usual case, an empty batch, trades buffers instead of moving messages.
+  if (batch.empty()) {
+    batch.swap(items_);
+  } else {
+    for (auto& m : items_) batch.push_back(std::move(m));
+  }
   items_.clear();
   bytes_ = 0;
 }

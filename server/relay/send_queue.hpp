@@ -8,7 +8,6 @@
 #pragma once
 
 #include <cstddef>
-#include <deque>
 #include <vector>
 
 #include "server/relay/message.hpp"
@@ -36,7 +35,9 @@ class SendQueue {
   void drop_queued_deltas();
 
   std::size_t max_bytes_;
-  std::deque<Message> items_;
+  // A vector, not a deque: libstdc++'s deque allocates ~600 bytes before
+  // its first element, for every spectator; this queue is empty nearly always.
+  std::vector<Message> items_;
   std::size_t bytes_ = 0;
   std::size_t dropped_ = 0;
   bool skipping_ = false;

@@ -5,15 +5,22 @@
 
 #include "server/relay/log.hpp"
 
-namespace beast = boost::beast;
-namespace websocket = beast::websocket;
 namespace net = boost::asio;
+using boost::system::error_code;
 
 namespace mc::relay {
 namespace {
 // Spectators only ever send small control messages; more than this per
 // second is a broken or hostile client.
 constexpr int kMaxInboundPerSecond = 20;
+// After our close frame, how long the client has to answer before the
+// socket is closed anyway.
+constexpr auto kCloseLinger = std::chrono::seconds(2);
+// Plain TCP reads go through one buffer per I/O thread: a spectator that
+// sent nothing (nearly all of them) holds none.
+constexpr std::size_t kReadChunk = 16 * 1024;
+// TLS records are at most 16 KB; one read takes what one record holds.
+constexpr std::size_t kTlsReadBuffer = 16 * 1024;
 }  // namespace
 
 // A session's subscription to one channel. A new tap per switch: deliveries
@@ -44,12 +51,12 @@ class WebSocketSession::Tap : public Subscriber {
   net::io_context* home_;
 };
 
-WebSocketSession::WebSocketSession(Transport&& transport, std::shared_ptr<Channel> channel,
+WebSocketSession::WebSocketSession(SpectatorLink&& link, std::shared_ptr<Channel> channel,
                                    const RelayConfig& config, RelayStats& stats,
                                    std::unique_ptr<ConnectionLimiter::Ticket> ticket,
                                    std::shared_ptr<ReplaySource> replay, ReplayFactory* timeshift,
                                    SessionSet* sessions)
-    : ws_(std::move(transport)),
+    : link_(std::move(link)),
       live_(std::move(channel)),
       config_(config),
       stats_(stats),
@@ -57,8 +64,7 @@ WebSocketSession::WebSocketSession(Transport&& transport, std::shared_ptr<Channe
       replay_(std::move(replay)),
       timeshift_factory_(replay_ ? nullptr : timeshift),
       sessions_(sessions),
-      queue_(config.max_queue_bytes),
-      stall_timer_(ws_.get_executor()) {
+      queue_(config.max_queue_bytes) {
   ++stats_.clients;
   ++stats_.connections_total;
 }
@@ -80,94 +86,129 @@ void WebSocketSession::end_session() {
   open_ = false;
   if (current_ && tap_) current_->leave(tap_.get());
   tap_.reset();
-  stall_timer_.cancel();
   if (replay_) {
     replay_->close();
     replay_.reset();
   }
 }
 
+void WebSocketSession::drop_connection() {
+  end_session();
+  if (dead_) return;
+  dead_ = true;
+  if (timer_) timer_->cancel();
+  link_.close();
+}
+
 void WebSocketSession::shutdown() {
-  net::post(ws_.get_executor(), [self = shared_from_this()] {
-    self->close_with(websocket::close_code::going_away, "server shutting down");
+  net::post(link_.get_executor(), [self = shared_from_this()] {
+    self->close_with(CloseCode::GoingAway, "server shutting down");
   });
 }
 
 void WebSocketSession::close(std::uint16_t code, const std::string& reason) {
-  net::post(ws_.get_executor(), [self = shared_from_this(), code, reason] {
-    self->close_with(static_cast<websocket::close_code>(code), reason);
-  });
+  net::post(link_.get_executor(), [self = shared_from_this(), code, reason] { self->close_with(code, reason); });
 }
 
-void WebSocketSession::run(beast::http::request<beast::http::string_body> req) {
+void WebSocketSession::run(std::string handshake_response, std::string_view early) {
   if (sessions_) sessions_->add(shared_from_this());
-  auto& transport = ws_.next_layer();
-  transport.set_owner(weak_from_this());
-  transport.on_idle([this] {
-    if (!writing_) write_next();
-  });
-  transport.tcp().expires_never();
-  ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
-  ws_.read_message_max(config_.max_inbound_message);
-  ws_.set_option(websocket::stream_base::decorator([](websocket::response_type& res) {
-    res.set(beast::http::field::server, "matchcast");
-  }));
-  ws_.async_accept(req, beast::bind_front_handler(&WebSocketSession::on_accept, shared_from_this()));
-}
-
-void WebSocketSession::on_accept(beast::error_code ec) {
-  if (ec) return log_event("ws_accept_failed", ec.message());
+  if (link_.is_tls()) tls_in_ = std::make_unique<char[]>(kTlsReadBuffer);
   open_ = true;
-  // Join and queue the catch-up on this strand, before any later deliver()
-  // (which is posted to the same strand) can run: nothing is missed or doubled.
+  // The 101 response goes first; then, on this thread and before any later
+  // deliver() (posted to the same thread), the join and its catch-up:
+  // nothing is missed or doubled.
+  queue_.push(Message::session_bytes(std::move(handshake_response)));
   switch_to(live_);
-  arm_stall_check();
-  do_read();
+  if (!early.empty() && !consume(early)) return;
+  start_read();
 }
 
-void WebSocketSession::switch_to(std::shared_ptr<Channel> channel, std::optional<Message> announce) {
-  if (current_ && tap_) current_->leave(tap_.get());
-  // A session on a thread of its own (the relay's io_context per thread)
-  // is served by its channel's per-thread task; otherwise by posts.
-  auto executor = ws_.get_executor();
-  auto* on_thread = executor.target<net::io_context::executor_type>();
-  tap_ = std::make_shared<Tap>(weak_from_this(), ++epoch_, on_thread ? &on_thread->context() : nullptr);
-  current_ = std::move(channel);
-  std::vector<Message> dropped;
-  queue_.take_all(dropped);  // the old source's backlog is of no use now
-  if (announce) enqueue(std::move(*announce));
-  for (auto& m : current_->join(tap_)) enqueue(std::move(m));
-  account_queue();
+// ---- reading ---------------------------------------------------------------
+
+void WebSocketSession::start_read() {
+  if (dead_) return;
+  if (link_.is_tls()) {
+    link_.async_read_some(net::buffer(tls_in_.get(), kTlsReadBuffer),
+                          [self = shared_from_this()](error_code ec, std::size_t n) { self->on_tls_read(ec, n); });
+  } else {
+    link_.async_wait_readable([self = shared_from_this()](error_code ec) { self->on_readable(ec); });
+  }
 }
 
-void WebSocketSession::do_read() {
-  ws_.async_read(in_, beast::bind_front_handler(&WebSocketSession::on_read, shared_from_this()));
+void WebSocketSession::on_readable(error_code ec) {
+  if (dead_) return;
+  if (ec) return drop_connection();
+  thread_local char chunk[kReadChunk];
+  // A few chunks at most, then back to the loop: one busy client cannot
+  // hold the thread (the next wait completes at once if more is there).
+  for (int round = 0; round < 4; ++round) {
+    const std::size_t n = link_.read_now(net::buffer(chunk), ec);
+    if (ec == net::error::would_block || ec == net::error::try_again) break;
+    if (ec) return drop_connection();  // end of stream (the peer left) or an error
+    if (!consume({chunk, n})) return;
+    if (n < kReadChunk) break;
+  }
+  if (inbound_) inbound_->shrink();
+  start_read();
 }
 
-void WebSocketSession::on_read(beast::error_code ec, std::size_t) {
-  if (ec) {
-    // Closed by the peer, timed out, or a protocol violation (including a
-    // message over read_message_max): the session ends.
-    if (ec == websocket::error::message_too_big) ++stats_.inbound_rejected;
-    end_session();
-    return;
+void WebSocketSession::on_tls_read(error_code ec, std::size_t bytes) {
+  if (dead_) return;
+  if (ec) return drop_connection();
+  if (!consume({tls_in_.get(), bytes})) return;
+  if (inbound_) inbound_->shrink();
+  start_read();
+}
+
+bool WebSocketSession::consume(std::string_view bytes) {
+  if (!inbound_) inbound_ = std::make_unique<WsInbound>(config_.max_inbound_message);
+  inbound_->feed(bytes);
+  WsInbound::Event ev;
+  while (!dead_ && inbound_->next(ev)) {
+    switch (ev.kind) {
+      case WsInbound::Kind::Error:
+        // A protocol violation or a message over --max-message-bytes.
+        ++stats_.inbound_rejected;
+        close_with(ev.code, ev.data);
+        return !dead_;
+      case WsInbound::Kind::Close:
+        peer_closed_ = true;
+        if (close_sent_) {
+          drop_connection();  // the closing handshake is complete
+          return false;
+        }
+        // The client said goodbye first: answer with its code, then close.
+        close_with(ev.code == 1005 ? static_cast<std::uint16_t>(CloseCode::Normal) : ev.code, {});
+        return !dead_;
+      case WsInbound::Kind::Pong:
+        break;
+      case WsInbound::Kind::Ping:
+        // One pong answers every ping not yet answered (RFC 6455 5.5.3), so
+        // a ping flood costs one queued frame, never a growing queue.
+        if (!closing_ && !pong_queued_) {
+          pong_queued_ = true;
+          queue_.push(Message::session_frame(0xA, ev.data));
+          if (!writing_) write_next();
+        }
+        break;
+      case WsInbound::Kind::Text:
+      case WsInbound::Kind::Binary: {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - window_start_ > std::chrono::seconds(1)) {
+          window_start_ = now;
+          window_messages_ = 0;
+        }
+        if (++window_messages_ > kMaxInboundPerSecond) {
+          ++stats_.inbound_rejected;
+          close_with(CloseCode::Policy, "too many messages");
+          return !dead_;
+        }
+        if (ev.kind == WsInbound::Kind::Text && open_) on_text(ev.data);
+        break;
+      }
+    }
   }
-  const auto now = std::chrono::steady_clock::now();
-  if (now - window_start_ > std::chrono::seconds(1)) {
-    window_start_ = now;
-    window_messages_ = 0;
-  }
-  if (++window_messages_ > kMaxInboundPerSecond) {
-    in_.consume(in_.size());
-    ++stats_.inbound_rejected;
-    return close_with(websocket::close_code::policy_error, "too many messages");
-  }
-  if (ws_.got_text()) {
-    const auto data = in_.data();
-    on_text({static_cast<const char*>(data.data()), data.size()});
-  }
-  in_.consume(in_.size());
-  if (open_) do_read();
+  return !dead_;
 }
 
 void WebSocketSession::on_text(std::string_view text) {
@@ -189,7 +230,7 @@ void WebSocketSession::on_timeshift(std::string_view action, const double* time)
   if (action == "seek" && time) {
     if (!shifted_) {
       std::string error;
-      auto replay = timeshift_factory_->open_timeshift(live_->name(), ws_.get_executor(), error);
+      auto replay = timeshift_factory_->open_timeshift(live_->name(), link_.get_executor(), error);
       if (!replay) {
         enqueue(Message::control(nlohmann::json{{"type", "timeshift"}, {"mode", "live"}, {"error", error}}.dump(
             -1, ' ', false, nlohmann::json::error_handler_t::replace)));
@@ -210,8 +251,29 @@ void WebSocketSession::on_timeshift(std::string_view action, const double* time)
   }
 }
 
+// ---- writing ---------------------------------------------------------------
+
+void WebSocketSession::switch_to(std::shared_ptr<Channel> channel, std::optional<Message> announce) {
+  if (current_ && tap_) current_->leave(tap_.get());
+  // A session on a thread of its own (the relay's io_context per thread)
+  // is served by its channel's per-thread task; otherwise by posts.
+  auto executor = link_.get_executor();
+  auto* on_thread = executor.target<net::io_context::executor_type>();
+  tap_ = std::make_shared<Tap>(weak_from_this(), ++epoch_, on_thread ? &on_thread->context() : nullptr);
+  current_ = std::move(channel);
+  // The old source's backlog is of no use now; the handshake response and
+  // pongs (session messages) still go out.
+  std::vector<Message> queued;
+  queue_.take_all(queued);
+  for (auto& m : queued)
+    if (m.kind == Message::Kind::Session) queue_.push(std::move(m));
+  if (announce) enqueue(std::move(*announce));
+  for (auto& m : current_->join(tap_)) enqueue(std::move(m));
+  account_queue();
+}
+
 void WebSocketSession::deliver(std::uint64_t tap_epoch, const Message& m) {
-  net::post(ws_.get_executor(), [self = shared_from_this(), tap_epoch, m] {
+  net::post(link_.get_executor(), [self = shared_from_this(), tap_epoch, m] {
     if (tap_epoch == self->epoch_) self->enqueue(m);
   });
 }
@@ -228,97 +290,146 @@ void WebSocketSession::write_next() {
   // by whatever queued meanwhile.
   for (;;) {
     writing_ = false;
-    // A close frame is queued behind the write that just ended, or the
-    // session is over: nothing more goes out. Or Beast is writing a control
-    // frame (pong, close): the transport calls back when it is done.
-    if (closing_ || !open_ || !ws_.next_layer().can_write_raw() || queue_.empty()) return;
+    if (dead_ || queue_.empty()) break;
     // Everything that queued during the last write goes out as one batch.
     batch_.clear();
     buffers_.clear();
     queue_.take_all(batch_);
     account_queue();
-    std::size_t total = 0;
+    pong_queued_ = false;  // a pong queued so far is in this batch
+    batch_bytes_ = 0;
     for (const auto& m : batch_) {
       buffers_.push_back(net::buffer(*m.wire));
-      total += m.wire->size();
+      batch_bytes_ += m.wire->size();
     }
     writing_ = true;
-    write_started_ = std::chrono::steady_clock::now();
     ++stats_.writes;
-    sent_inline_ = 0;
-    if (!ws_.next_layer().is_tls()) {
-      beast::error_code ec;
-      sent_inline_ = ws_.next_layer().try_write_raw(buffers_, ec);
-      if (ec && ec != net::error::would_block) {
-        writing_ = false;
-        end_session();
-        return;
-      }
-      if (sent_inline_ == total) {
-        batch_sent(total);
-        continue;
-      }
-      // The kernel took part: the rest waits for room, asynchronously.
-      ++stats_.partial_writes;
-      std::size_t skip = sent_inline_;
-      auto first = buffers_.begin();
-      while (skip >= first->size()) skip -= (first++)->size();
-      *first += skip;
-      buffers_.erase(buffers_.begin(), first);
+    if (link_.is_tls()) {
+      write_started_ = std::chrono::steady_clock::now();
+      arm_timer(config_.stall_timeout);
+      link_.async_write_all(buffers_, [self = shared_from_this()](error_code ec, std::size_t n) {
+        self->on_tls_write(ec, n);
+      });
+      return;
     }
-    ws_.next_layer().async_write_raw(
-        buffers_, beast::bind_front_handler(&WebSocketSession::on_write, shared_from_this()));
+    error_code ec;
+    const std::size_t sent = link_.write_now(buffers_, ec);
+    if (ec && ec != net::error::would_block && ec != net::error::try_again) {
+      writing_ = false;
+      return drop_connection();
+    }
+    if (sent == batch_bytes_) {
+      batch_sent(sent);
+      continue;
+    }
+    // The kernel took part: the rest waits for room. Only now is the stall
+    // clock started; a spectator that keeps up never arms it.
+    ++stats_.partial_writes;
+    skip_sent(sent);
+    write_started_ = std::chrono::steady_clock::now();
+    arm_timer(config_.stall_timeout);
+    link_.async_wait_writable([self = shared_from_this()](error_code e) { self->on_writable(e); });
     return;
+  }
+  // Everything is out. After our close frame: no more bytes from us; the
+  // client has a moment to answer before the socket closes.
+  if (closing_ && !close_sent_ && !dead_ && queue_.empty()) {
+    close_sent_ = true;
+    if (peer_closed_) return drop_connection();
+    link_.shutdown_send();
+    arm_timer(kCloseLinger);
   }
 }
 
-void WebSocketSession::on_write(beast::error_code ec, std::size_t bytes) {
-  writing_ = false;
-  if (ec) {
-    end_session();
+void WebSocketSession::skip_sent(std::size_t bytes) {
+  auto first = buffers_.begin();
+  while (first != buffers_.end() && bytes >= first->size()) bytes -= (first++)->size();
+  if (first != buffers_.end()) *first += bytes;
+  buffers_.erase(buffers_.begin(), first);
+}
+
+void WebSocketSession::on_writable(error_code ec) {
+  if (dead_) return;
+  if (ec) return drop_connection();
+  const std::size_t left = net::buffer_size(buffers_);
+  const std::size_t sent = link_.write_now(buffers_, ec);
+  if (ec && ec != net::error::would_block && ec != net::error::try_again) return drop_connection();
+  if (sent < left) {
+    skip_sent(sent);
+    link_.async_wait_writable([self = shared_from_this()](error_code e) { self->on_writable(e); });
     return;
   }
-  batch_sent(sent_inline_ + bytes);
+  if (timer_) timer_->cancel();
+  batch_sent(batch_bytes_);
+  write_next();
+}
+
+void WebSocketSession::on_tls_write(error_code ec, std::size_t) {
+  if (dead_) return;
+  if (ec) return drop_connection();
+  if (timer_) timer_->cancel();
+  batch_sent(batch_bytes_);
   write_next();
 }
 
 void WebSocketSession::batch_sent(std::size_t bytes) {
-  stats_.messages_sent += batch_.size();
+  writing_ = false;
   stats_.bytes_sent += bytes;
-  const auto now = std::chrono::steady_clock::now();
-  for (const auto& sent : batch_)
-    if (sent.binary())
-      stats_.record_delay(std::chrono::duration<double, std::milli>(now - sent.published).count());
+  std::size_t messages = 0;
+  std::chrono::steady_clock::time_point now{};
+  for (const auto& sent : batch_) {
+    if (sent.kind == Message::Kind::Session) continue;  // a pong or a close: not the broadcast
+    ++messages;
+    if (!sent.binary()) continue;
+    if (now == std::chrono::steady_clock::time_point{}) now = std::chrono::steady_clock::now();
+    stats_.record_delay(std::chrono::duration<double, std::milli>(now - sent.published).count());
+  }
+  stats_.messages_sent += messages;
+  batch_.clear();
 }
 
-void WebSocketSession::arm_stall_check() {
-  // Checked a few times per stall timeout: bounds detection to 1.25x the
-  // timeout without arming a timer for every write.
-  stall_timer_.expires_after(std::max(config_.stall_timeout / 4, std::chrono::milliseconds(10)));
-  stall_timer_.async_wait(beast::bind_front_handler(&WebSocketSession::on_stall_check, shared_from_this()));
+// ---- the one timer: a write stuck for the stall timeout, or a close lingering
+
+void WebSocketSession::arm_timer(std::chrono::steady_clock::duration after) {
+  if (!timer_) timer_ = std::make_unique<net::steady_timer>(link_.get_executor());
+  timer_->expires_after(after);
+  timer_->async_wait([self = shared_from_this()](error_code ec) { self->on_timer(ec); });
 }
 
-void WebSocketSession::on_stall_check(beast::error_code ec) {
-  if (ec == net::error::operation_aborted || !open_) return;
-  if (!writing_ || std::chrono::steady_clock::now() - write_started_ < config_.stall_timeout)
-    return arm_stall_check();
+void WebSocketSession::on_timer(error_code ec) {
+  if (ec == net::error::operation_aborted || dead_) return;
+  if (close_sent_) return drop_connection();  // the client never answered our close
+  if (!writing_) return;
+  if (std::chrono::steady_clock::now() - write_started_ < config_.stall_timeout) return arm_timer(config_.stall_timeout / 4);
   // One write has not completed for stall_timeout: the client stopped
   // reading. Its kernel buffer is full, so a close frame cannot reach it
   // either; drop the connection and free its queue.
   ++stats_.closed_slow;
   log_event("ws_closed_stalled", live_->name());
-  end_session();
-  ws_.next_layer().close();
+  drop_connection();
 }
 
-void WebSocketSession::close_with(websocket::close_code code, std::string_view reason) {
-  if (closing_ || !open_) return;
+void WebSocketSession::close_with(CloseCode code, std::string_view reason) {
+  close_with(static_cast<std::uint16_t>(code), reason);
+}
+
+void WebSocketSession::close_with(std::uint16_t code, std::string_view reason) {
+  if (closing_ || dead_) return;
   closing_ = true;
   end_session();
+  // What was queued for the broadcast is of no use now; the close frame
+  // follows any write in flight.
+  std::vector<Message> dropped;
+  queue_.take_all(dropped);
+  account_queue();
   constexpr std::size_t kMaxReason = 123;  // RFC 6455: 125-byte payload, 2 of them the code
   reason = reason.substr(0, kMaxReason);
-  ws_.async_close(websocket::close_reason(code, beast::string_view(reason.data(), reason.size())),
-                  [self = shared_from_this()](beast::error_code) {});
+  std::string payload;
+  payload.push_back(static_cast<char>(code >> 8));
+  payload.push_back(static_cast<char>(code & 0xFF));
+  payload.append(reason);
+  queue_.push(Message::session_frame(0x8, payload));
+  if (!writing_) write_next();
 }
 
 }  // namespace mc::relay

@@ -1,9 +1,14 @@
 // One spectator's WebSocket: joins a channel, then sends it frames through a
 // bounded queue with one write in flight. Everything queued while a write
 // is in flight goes out in the next write, as one gathered write of the
-// messages' pre-framed bytes (see transport.hpp). A slow spectator skips to
-// the next keyframe; a stalled one is closed. Nothing a spectator does can
-// slow the channel: deliveries only post to this session's strand.
+// messages' pre-framed bytes. A slow spectator skips to the next keyframe; a
+// stalled one is closed. Nothing a spectator does can slow the channel:
+// deliveries only post to this session's thread.
+//
+// The session runs the WebSocket protocol itself once Beast has parsed the
+// upgrade request (server/relay/README.md says why): its writes are the
+// queue's batches, its reads go through WsInbound, and pongs and close
+// frames are queued like any message, so nothing can interleave.
 //
 // Time shift: a live spectator may rewind its channel without leaving it.
 // The session then follows a private replay of the channel's running
@@ -18,12 +23,10 @@
 #pragma once
 
 #include <boost/asio/steady_timer.hpp>
-#include <boost/beast/core.hpp>
-#include <boost/beast/http.hpp>
-#include <boost/beast/websocket.hpp>
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -34,7 +37,8 @@
 #include "server/relay/replay_source.hpp"
 #include "server/relay/send_queue.hpp"
 #include "server/relay/session_set.hpp"
-#include "server/relay/transport.hpp"
+#include "server/relay/spectator_link.hpp"
+#include "server/relay/ws_inbound.hpp"
 
 namespace mc::relay {
 
@@ -44,14 +48,15 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   // session's lifetime. `replay`: a private replay of a recording (its
   // channel is `channel`). `timeshift`: opens time shifts of `channel`
   // (nullptr = none). `sessions`: registers itself there while alive.
-  WebSocketSession(Transport&& transport, std::shared_ptr<Channel> channel, const RelayConfig& config,
+  WebSocketSession(SpectatorLink&& link, std::shared_ptr<Channel> channel, const RelayConfig& config,
                    RelayStats& stats, std::unique_ptr<ConnectionLimiter::Ticket> ticket,
                    std::shared_ptr<ReplaySource> replay = nullptr, ReplayFactory* timeshift = nullptr,
                    SessionSet* sessions = nullptr);
   ~WebSocketSession();
 
-  // Completes the upgrade for `req` and starts the session.
-  void run(boost::beast::http::request<boost::beast::http::string_body> req);
+  // Sends the 101 `handshake_response` (ws_handshake.hpp) and starts the
+  // session. `early` holds bytes the client sent right after its request.
+  void run(std::string handshake_response, std::string_view early = {});
 
   // From a channel's publisher thread, through the session's current tap.
   void deliver(std::uint64_t tap_epoch, const Message& m);
@@ -64,9 +69,11 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
  private:
   class Tap;
 
-  void on_accept(boost::beast::error_code ec);
-  void do_read();
-  void on_read(boost::beast::error_code ec, std::size_t bytes);
+  void start_read();
+  void on_readable(boost::system::error_code ec);
+  void on_tls_read(boost::system::error_code ec, std::size_t bytes);
+  // Takes bytes from the client; false when the session ended on them.
+  bool consume(std::string_view bytes);
   void on_text(std::string_view text);
   void on_timeshift(std::string_view action, const double* time);
   // Leaves the current source and joins `channel`: queued messages of the
@@ -75,15 +82,19 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   void switch_to(std::shared_ptr<Channel> channel, std::optional<Message> announce = std::nullopt);
   void enqueue(Message m);
   void write_next();
-  void on_write(boost::beast::error_code ec, std::size_t bytes);
+  void on_writable(boost::system::error_code ec);
+  void on_tls_write(boost::system::error_code ec, std::size_t bytes);
   void batch_sent(std::size_t bytes);
-  void arm_stall_check();
-  void on_stall_check(boost::beast::error_code ec);
-  void close_with(boost::beast::websocket::close_code code, std::string_view reason);
-  void end_session();
+  void skip_sent(std::size_t bytes);
+  void arm_timer(std::chrono::steady_clock::duration after);
+  void on_timer(boost::system::error_code ec);
+  void close_with(CloseCode code, std::string_view reason);
+  void close_with(std::uint16_t code, std::string_view reason);
+  void end_session();     // leaves the channel, stops the replay
+  void drop_connection(); // and closes the socket: nothing more in or out
   void account_queue();
 
-  boost::beast::websocket::stream<Transport> ws_;
+  SpectatorLink link_;
   std::shared_ptr<Channel> live_;     // the channel the spectator asked for
   std::shared_ptr<Channel> current_;  // the one it follows now
   std::shared_ptr<Tap> tap_;          // current_'s subscription
@@ -94,21 +105,30 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   std::shared_ptr<ReplaySource> replay_;  // a recording's replay, or the current time shift
   ReplayFactory* timeshift_factory_;
   SessionSet* sessions_;                  // for a graceful stop; may be nullptr
-  bool shifted_ = false;                  // replay_ is a time shift of live_
   std::int64_t accounted_queue_bytes_ = 0;  // this session's share of stats_.queued_bytes
-  boost::beast::flat_buffer in_;
+  // Made when the client first sends something: most spectators never do,
+  // and then hold no reader at all.
+  std::unique_ptr<WsInbound> inbound_;
+  std::unique_ptr<char[]> tls_in_;  // TLS only: the decrypted bytes' buffer
   SendQueue queue_;
   std::vector<Message> batch_;  // the write in flight: owns the bytes of...
-  std::vector<boost::asio::const_buffer> buffers_;  // ...its gathered buffers
-  std::size_t sent_inline_ = 0;  // bytes of the batch in flight written before it went asynchronous
+  std::vector<boost::asio::const_buffer> buffers_;  // ...what is left of its gathered buffers
+  std::size_t batch_bytes_ = 0;  // the batch's whole size
   std::chrono::steady_clock::time_point write_started_{};
-  bool writing_ = false;
-  bool open_ = false;
-  bool closing_ = false;
-  boost::asio::steady_timer stall_timer_;  // a periodic check, not one timer per write
+  // Made and armed only while a write waits for the kernel (stall check) or
+  // while a close lingers: a healthy spectator has no timer at all.
+  std::unique_ptr<boost::asio::steady_timer> timer_;
   // Inbound rate limit: messages in the current one-second window.
   std::chrono::steady_clock::time_point window_start_{};
   int window_messages_ = 0;
+  bool writing_ = false;
+  bool pong_queued_ = false; // a pong waits in the queue: further pings need no other
+  bool open_ = false;        // subscribed: takes messages
+  bool shifted_ = false;     // replay_ is a time shift of live_
+  bool closing_ = false;     // our close frame is queued or sent
+  bool close_sent_ = false;  // and written
+  bool peer_closed_ = false; // the client's close frame arrived
+  bool dead_ = false;        // the socket is closed
 };
 
 }  // namespace mc::relay

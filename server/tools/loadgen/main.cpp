@@ -144,9 +144,11 @@ int main(int argc, char** argv) {
   if (o.nice != 0 && ::setpriority(PRIO_PROCESS, 0, o.nice) != 0)
     std::fprintf(stderr, "matchcast-loadgen: cannot set niceness %d; going on at the current one\n", o.nice);
 
+  // Headers alone need no skeleton, and so no hello: then any server that
+  // sends Matchcast frame headers can be measured (bench-fanout's anchor).
   mc::proto::Hello hello;
   std::string error;
-  if (!fetch_hello(o, hello, error)) {
+  if (!o.header_only && !fetch_hello(o, hello, error)) {
     std::fprintf(stderr, "matchcast-loadgen: cannot read the hello from %s:%u%s: %s\n", o.host.c_str(),
                  o.port, o.target.c_str(), error.c_str());
     return 1;
