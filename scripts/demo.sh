@@ -11,4 +11,10 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh --target matchcast-server
 scripts/build-wasm.sh   # the page opens dropped logs by itself (web/wasm/)
-exec build/server/app/matchcast-server --port "${PORT:-8080}" "$@"
+# Recordings (--record-dir recordings): one file per pass of the looping
+# game, ~3 MB each. The demo keeps at most 300 MB and two days of them
+# (the oldest deleted first), unless told otherwise.
+limits=()
+[[ " $* " == *" --record-max-bytes"* ]] || limits+=(--record-max-bytes 300M)
+[[ " $* " == *" --record-max-age"* ]] || limits+=(--record-max-age 2d)
+exec build/server/app/matchcast-server --port "${PORT:-8080}" "${limits[@]}" "$@"

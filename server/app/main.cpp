@@ -12,7 +12,7 @@
 #include "server/app/feed_control.hpp"
 #include "server/app/log_feed.hpp"
 #include "server/app/nats_roles.hpp"
-#include "server/app/recorder.hpp"
+#include "server/app/recordings.hpp"
 #include "server/app/server_options.hpp"
 #include "server/relay/log.hpp"
 #include "server/relay/relay_server.hpp"
@@ -27,16 +27,6 @@ void raise_fd_limit() {
     r.rlim_cur = r.rlim_max;
     setrlimit(RLIMIT_NOFILE, &r);
   }
-}
-
-// <channel>-<UTC date-time>.mcrec: one file per channel per run, sorted by time.
-std::string recording_name(const std::string& channel) {
-  std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
-  return channel + "-" + stamp + mc::replay::kRecordingSuffix;
 }
 
 }  // namespace
@@ -59,6 +49,9 @@ int main(int argc, char** argv) {
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
   std::signal(SIGPIPE, SIG_IGN);
+  // Past a file-size limit (RLIMIT_FSIZE) a write fails with EFBIG, which
+  // the recorder reports, instead of the default: the process killed.
+  std::signal(SIGXFSZ, SIG_IGN);
 
   auto channels = std::make_shared<mc::relay::ChannelRegistry>();
   mc::app::FeedControl feeds(channels);
@@ -71,25 +64,13 @@ int main(int argc, char** argv) {
   }
   // Before the recorders: each live recording is also its channel's time shift.
   mc::replay::ReplayCatalog replays(options->record_dir);
-  std::vector<std::shared_ptr<mc::app::Recorder>> recorders;
-  std::mutex recorders_mutex;  // an edge starts its recorders from its own thread
+  // One file per game; the oldest deleted past --record-max-bytes/-age.
+  mc::app::Recordings recordings(options->record_dir, options->retention, &replays);
+  recordings.prune();
   auto record = [&](const std::shared_ptr<mc::relay::Channel>& channel) {
-    const auto path = (std::filesystem::path(options->record_dir) / recording_name(channel->name())).string();
     // A recording that cannot start is logged; the broadcast goes on.
-    std::string why;
-    auto rec = mc::app::Recorder::start(channel, path, why);
-    std::lock_guard lock(recorders_mutex);
-    if (rec) {
-      replays.set_live_recording(channel->name(), std::filesystem::path(path).filename().string());
-      recorders.push_back(std::move(rec));
-    } else {
-      mc::relay::log_event("recording_failed", why);
-    }
+    recordings.record(channel);
   };
-  if (!options->record_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(options->record_dir, ec);
-  }
   // With NATS, exactly one place records (--record-at).
   if (mc::app::records_local_feeds(*options))
     for (const auto& cf : options->feeds) record(channels->find(cf.channel));
@@ -114,14 +95,19 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
   mc::relay::log_event("listening", host + ":" + std::to_string(server.port()));
 
-  int sig = 0;
-  sigwait(&stop_signals, &sig);
+  // Until a stop signal: retention also applies to recordings that age
+  // while nothing new is written.
+  int sig = -1;
+  const timespec prune_every{60, 0};
+  while (sig <= 0) {
+    sig = sigtimedwait(&stop_signals, nullptr, &prune_every);
+    if (sig <= 0) recordings.prune();
+  }
   mc::relay::log_event("stopping", sig == SIGTERM ? "SIGTERM" : "SIGINT");
   feeds.stop_all();
   nats.stop();
   server.stop();
-  std::lock_guard lock(recorders_mutex);
-  for (auto& rec : recorders) rec->stop();
+  recordings.stop_all();
   mc::relay::log_event("stopped");
   return 0;
 }

@@ -56,6 +56,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   FeedConfig feed;
   unsigned max_queue_kb = 0, stall_ms = 0;
   std::string role = "standalone", edge_games, record_at = "origin";
+  std::string record_max_bytes = "2G", record_max_age = "30d";
   unsigned nats_reconnect_ms = 0, origin_silence_ms = 0, edge_on_demand_ms = 0;
   std::vector<std::string> details, anim_modes;
   std::string reach_channels, mocap_dir = source_dir + "/data/mocap", mocap_cache = "mocap-cache";
@@ -106,7 +107,11 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
         "connections one client address may hold, 0 = no limit")
     ("allowed-origins", po::value(&origins), "comma-separated Origin values allowed to open the stream (default: any)")
     ("record-dir", po::value(&o.record_dir)->default_value(o.record_dir),
-        "record every live channel here and offer the recordings for replay (empty: off)")
+        "record every live channel here, one file per game, and offer the recordings for replay (empty: off)")
+    ("record-max-bytes", po::value(&record_max_bytes)->default_value(record_max_bytes),
+        "recordings may take this much together (K, M, G: powers of 1024); past it the oldest are deleted (0: no limit)")
+    ("record-max-age", po::value(&record_max_age)->default_value(record_max_age),
+        "recordings last written longer ago are deleted: 90s, 30m, 12h, 7d (0: no limit)")
     ("control-token", po::value(&o.relay.control_token),
         "bearer token for POST /control/... (default: control disabled)")
     ("tls-cert", po::value(&o.relay.tls_cert_file),
@@ -159,6 +164,16 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     return std::nullopt;
   }
   o.relay.socket_send_buffer = static_cast<std::size_t>(send_buffer_kb) * 1024;
+  if (!parse_byte_size(record_max_bytes, o.retention.max_bytes)) {
+    message = "matchcast-server: --record-max-bytes takes a size such as 500M or 2G, not '" + record_max_bytes + "'";
+    exit_code = 2;
+    return std::nullopt;
+  }
+  if (!parse_duration(record_max_age, o.retention.max_age)) {
+    message = "matchcast-server: --record-max-age takes a duration such as 12h or 7d, not '" + record_max_age + "'";
+    exit_code = 2;
+    return std::nullopt;
+  }
   if (feed.speed <= 0 || feed.speed > 100) {
     message = "matchcast-server: --speed must be in (0, 100]";
     exit_code = 2;

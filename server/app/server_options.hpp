@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "server/app/log_feed.hpp"
+#include "server/app/recordings.hpp"
 #include "server/nats/nats_config.hpp"
 #include "server/relay/relay_config.hpp"
 
@@ -25,6 +26,10 @@ struct ServerOptions {
   // Every live channel is recorded here, and its recordings are offered for
   // replay. Empty = no recording, no replay.
   std::string record_dir = "recordings";
+  // One file per game; past either bound the oldest recordings are deleted
+  // (--record-max-bytes, --record-max-age): recording never fills the disk.
+  // 2 GiB is ~5 days of the looping demo (~430 MB a day), or ~700 games.
+  RetentionPolicy retention{2ull << 30, std::chrono::hours(24 * 30)};
   // Origin / edge over NATS (server/nats/README.md); standalone by default.
   nats::NatsConfig nats;
 };

@@ -62,11 +62,15 @@ bool RecordingWriter::open(const std::string& path, std::string_view hello_json,
 bool RecordingWriter::write_all(std::string_view bytes, std::string& error) {
   // One write() per record in the normal case: a kill between two writes
   // leaves whole records only.
+  const std::uint64_t start = offset_;
   while (!bytes.empty()) {
     const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
     if (n < 0) {
       if (errno == EINTR) continue;
       error = "cannot write recording " + path_ + ": " + std::strerror(errno);
+      // Cut off the part of the record that did go out: the file then ends
+      // with a whole record, as if this write had never started.
+      if (offset_ != start && ::ftruncate(fd_, static_cast<off_t>(start)) == 0) offset_ = start;
       return false;
     }
     offset_ += static_cast<std::uint64_t>(n);
@@ -132,6 +136,13 @@ bool RecordingWriter::add_control(std::string_view json_text, std::string& error
   }
   chunk_.add_control(json_text);
   return true;
+}
+
+void RecordingWriter::abandon() {
+  if (fd_ < 0) return;
+  ::close(fd_);
+  fd_ = -1;
+  chunk_ = proto::rec::ChunkBuilder();
 }
 
 bool RecordingWriter::close(std::string& error) {

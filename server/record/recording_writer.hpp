@@ -5,7 +5,9 @@
 // keyframe arrives (or after max_chunk_frames), then fdatasync'ed if
 // `sync` is set. A crash or SIGKILL therefore loses at most the chunk being
 // collected (one keyframe interval, 1 s by default) and never touches bytes
-// already written; the reader drops a half-written last record.
+// already written; the reader drops a half-written last record. A write
+// that fails (a full disk, a file-size limit) is cut back off the file, so
+// that what is left is whole records.
 #pragma once
 
 #include <cstdint>
@@ -65,6 +67,10 @@ class RecordingWriter {
   // Writes the pending chunk, the index and the trailer, and closes. A file
   // that was never closed is still readable (the reader rebuilds the index).
   bool close(std::string& error);
+  // Closes without writing anything more (after a failed write, when the
+  // disk is full): the file keeps the whole records written so far, which
+  // the reader recovers without an index.
+  void abandon();
   bool is_open() const { return fd_ >= 0; }
   std::uint64_t bytes_written() const { return offset_; }
 

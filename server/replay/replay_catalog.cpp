@@ -61,6 +61,11 @@ void ReplayCatalog::set_live_recording(const std::string& channel, const std::st
   live_[channel] = Live{name, nullptr, {}};
 }
 
+void ReplayCatalog::forget(const std::string& name) {
+  std::lock_guard lock(mutex_);
+  summaries_.erase(name);
+}
+
 std::shared_ptr<relay::ReplaySource> ReplayCatalog::open_timeshift(const std::string& channel,
                                                                    boost::asio::any_io_executor executor,
                                                                    std::string& error) {

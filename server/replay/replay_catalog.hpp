@@ -31,12 +31,15 @@ class ReplayCatalog : public relay::ReplayFactory {
   std::string list_json() override;
 
   // `channel` is being recorded into `name` (a file in dir()): its
-  // spectators may time shift. Call before the relay starts.
+  // spectators may time shift. Again at each new file (one per game).
   void set_live_recording(const std::string& channel, const std::string& name);
   // A private replay that follows the growing recording of `channel`.
   std::shared_ptr<relay::ReplaySource> open_timeshift(const std::string& channel,
                                                       boost::asio::any_io_executor executor,
                                                       std::string& error) override;
+
+  // `name` was deleted: its cached summary goes too.
+  void forget(const std::string& name);
 
   const std::string& dir() const { return dir_; }
 

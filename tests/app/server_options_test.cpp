@@ -41,6 +41,22 @@ TEST(ServerOptions, BadDetailOrLookaheadIsAClearError) {
   EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--lookahead", "9"}, message));
 }
 
+TEST(ServerOptions, RecordingsAreBoundedByDefaultAndByChoice) {
+  std::string message;
+  auto o = parse({"--rcg", "a=x.rcg"}, message);
+  ASSERT_TRUE(o) << message;
+  EXPECT_EQ(o->retention.max_bytes, 2ull << 30);
+  EXPECT_EQ(o->retention.max_age, std::chrono::hours(24 * 30));
+  o = parse({"--rcg", "a=x.rcg", "--record-max-bytes", "300M", "--record-max-age", "2d"}, message);
+  ASSERT_TRUE(o) << message;
+  EXPECT_EQ(o->retention.max_bytes, 300ull << 20);
+  EXPECT_EQ(o->retention.max_age, std::chrono::hours(48));
+  EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--record-max-bytes", "lots"}, message));
+  EXPECT_NE(message.find("--record-max-bytes takes a size"), std::string::npos) << message;
+  EXPECT_FALSE(parse({"--rcg", "a=x.rcg", "--record-max-age", "1y"}, message));
+  EXPECT_NE(message.find("--record-max-age takes a duration"), std::string::npos) << message;
+}
+
 TEST(ServerOptions, AnimModeMocapLoadsTheCapturesOnceForTheChannelsThatAskForIt) {
   std::string message;
   const std::string dir = std::string(MATCHCAST_MOCAP_DIR) + "";
