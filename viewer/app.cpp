@@ -140,6 +140,7 @@ void App::check_hello() {
   if (!meta_.hello || meta_.hello_generation == hello_generation_) return;
   hello_generation_ = meta_.hello_generation;
   model_ = std::make_unique<PlayerModel>(meta_.hello->skeleton);
+  heads_ = std::make_unique<HeadSmoother>(meta_.hello->skeleton);
   renderer_->set_field(meta_.hello->field);
 }
 
@@ -250,6 +251,7 @@ int App::run_window() {
     const double rate = source_->paused() ? 0.0 : source_->speed();
     if (model_ && buffer_.sample(playhead_, dt * meta_.hello->frame_rate * rate, *sample_)) {
       blend_frames(sample_->a, sample_->b, sample_->t, meta_.hello->skeleton.dof_count(), *frame_);
+      heads_->apply(*frame_, dt);
       draw(*frame_, width, height, dt);
       ++drawn;
       skips += sample_->skipped;

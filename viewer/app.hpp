@@ -9,6 +9,7 @@
 
 #include "viewer/camera.hpp"
 #include "viewer/frame_buffer.hpp"
+#include "viewer/head_smoother.hpp"
 #include "viewer/options.hpp"
 #include "viewer/player_model.hpp"
 #include "viewer/source.hpp"
@@ -57,6 +58,7 @@ class App {
   Camera camera_;
   StreamMeta meta_;
   std::unique_ptr<PlayerModel> model_;
+  std::unique_ptr<HeadSmoother> heads_;  // heads at human speed where drawn
   std::uint64_t hello_generation_ = 0;
   int selected_ = -1;       // player slot (player_index), -1 = none chosen
   bool labels_ = true;

@@ -10,6 +10,7 @@ import * as THREE from 'three';
 import { findJoint, partOf } from '../model/skeleton.js';
 import { STATE } from '../model/playmodes.js';
 import { makeKit, numberTexture, contrastColor } from './kit.js';
+import { HeadSmoother } from '../model/neck.js';
 
 const DEG = Math.PI / 180;
 const AXES = { x: new THREE.Vector3(1, 0, 0), y: new THREE.Vector3(0, 1, 0), z: new THREE.Vector3(0, 0, 1) };
@@ -54,6 +55,9 @@ export class Players {
     this.showLabels = true;
     this.selected = null;        // rig key
     this.hiddenKey = null;       // first-person view hides this player's head
+    // Heads turn at human speed where they are drawn (model/neck.js).
+    this.heads = new HeadSmoother(skel);
+    this.lastUpdate = null;
 
     const ringGeo = new THREE.RingGeometry(0.55, 0.7, 40);
     this.ring = new THREE.Mesh(ringGeo, new THREE.MeshBasicMaterial({
@@ -142,6 +146,9 @@ export class Players {
   update(players) {
     const skel = this.skel;
     const seen = new Set();
+    const now = performance.now();
+    const dt = this.lastUpdate === null ? 0 : (now - this.lastUpdate) / 1000;
+    this.lastUpdate = now;
     for (const p of players) {
       const rig = this._rig(p);
       seen.add(rig.key);
@@ -154,9 +161,10 @@ export class Players {
       if (!visible) continue;
       rig.root.position.set(p.x, p.z, p.y);
       rig.root.rotation.set(0, -p.heading * DEG, 0);
+      const angles = this.heads.apply(rig.key, p, dt);
       for (let i = 0; i < skel.joints.length; i++) {
         const j = skel.joints[i];
-        localRotation(j.dofs, p.angles, j.angleIndex, rig.nodes[i].quaternion);
+        localRotation(j.dofs, angles, j.angleIndex, rig.nodes[i].quaternion);
       }
       rig.label.position.set(p.x, p.z + 1.15, p.y);
       if (rig.key === this.hiddenKey) rig.root.visible = false;
