@@ -2,8 +2,25 @@
 
 #include <algorithm>
 #include <boost/asio/post.hpp>
+#include <nlohmann/json.hpp>
 
 namespace mc::relay {
+namespace {
+
+// The slot of kKeptControlTypes that `json` goes to, or -1. Control
+// messages are a few a second: one parse each costs nothing that matters.
+int kept_slot(std::string_view json) {
+  const auto j = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) return -1;
+  const auto it = j.find("type");
+  if (it == j.end() || !it->is_string()) return -1;
+  const auto& type = it->get_ref<const std::string&>();
+  for (std::size_t i = 0; i < std::size(Channel::kKeptControlTypes); ++i)
+    if (type == Channel::kKeptControlTypes[i]) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace
 
 // The catch-up and the audience change together under the lock: a joiner
 // gets a message either in its catch-up or from the broadcast, never both.
@@ -14,8 +31,10 @@ void Channel::set_hello(std::string json) {
     std::lock_guard lock(mutex_);
     hello_ = m;
     // Frames coded against the old hello's skeleton are meaningless under the
-    // new one: joiners wait for the next keyframe.
+    // new one: joiners wait for the next keyframe. The kept metadata was the
+    // old game's: the publisher sends the new game's after the hello.
     gop_.clear();
+    kept_ = {};
     a = audience_locked();
   }
   send(a, m);
@@ -36,10 +55,12 @@ void Channel::publish_frame(std::string bytes, bool keyframe) {
 }
 
 void Channel::publish_control(std::string json) {
+  const int slot = kept_slot(json);
   Message m = Message::control(std::move(json));
   Audience a;
   {
     std::lock_guard lock(mutex_);
+    if (slot >= 0) kept_[static_cast<std::size_t>(slot)] = m;
     a = audience_locked();
   }
   send(a, m);
@@ -48,8 +69,10 @@ void Channel::publish_control(std::string json) {
 std::vector<Message> Channel::join(const std::shared_ptr<Subscriber>& s) {
   std::lock_guard lock(mutex_);
   std::vector<Message> first;
-  first.reserve(gop_.size() + 1);
+  first.reserve(gop_.size() + 1 + kept_.size());
   if (hello_.bytes) first.push_back(hello_);
+  for (const Message& k : kept_)
+    if (k.bytes) first.push_back(k);
   first.insert(first.end(), gop_.begin(), gop_.end());
   if (auto* home = s->home()) {
     auto it = std::find_if(groups_.begin(), groups_.end(), [home](const Group& g) { return g.home == home; });

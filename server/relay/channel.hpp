@@ -1,4 +1,5 @@
 // A channel is one game's broadcast: the hello every spectator gets first,
+// the match's current metadata (the latest "teams" and "score" messages),
 // the current group of pictures (the latest keyframe and the deltas since),
 // and the set of spectators. Frames are encoded once by the publisher and
 // the same immutable bytes go to every subscriber.
@@ -8,8 +9,10 @@
 #pragma once
 
 #include <boost/asio/io_context.hpp>
+#include <array>
 #include <atomic>
 #include <cstdint>
+#include <iterator>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -51,15 +54,24 @@ class Channel {
   const std::string& name() const { return name_; }
 
   // The hello a joiner receives first. Replacing it also sends it to the
-  // current spectators (the game or its metadata changed).
+  // current spectators (the game or its metadata changed) and forgets the
+  // kept metadata, which belonged to the game the old hello announced.
   void set_hello(std::string json);
   // One encoded pose frame. A keyframe starts a new catch-up group.
   void publish_frame(std::string bytes, bool keyframe);
-  // A JSON event or metadata change, sent to the current spectators only.
+  // A JSON event or metadata change, sent to the current spectators. The
+  // latest message of each type in kKeptControlTypes is also kept for
+  // joiners (proto/SPEC.md section 5.3).
   void publish_control(std::string json);
 
+  // The control messages whose latest copy a joiner receives right after
+  // the hello, in this order: what a scoreboard needs before the first
+  // picture. Any publisher (a feed, a replay, a NATS edge) gets this for free.
+  static constexpr const char* kKeptControlTypes[] = {"teams", "score"};
+
   // Registers `s` and returns what it must send first, atomically with
-  // respect to publishing: the hello, then the latest keyframe and every
+  // respect to publishing: the hello, the kept metadata (kKeptControlTypes
+  // order, those published so far), then the latest keyframe and every
   // delta since. A late joiner thus shows the current state at once.
   std::vector<Message> join(const std::shared_ptr<Subscriber>& s);
   void leave(const Subscriber* s);
@@ -85,6 +97,8 @@ class Channel {
   const std::string name_;
   mutable std::mutex mutex_;
   Message hello_;  // bytes == nullptr until set_hello
+  // The latest message of each kKeptControlTypes entry (bytes == nullptr: none yet).
+  std::array<Message, std::size(kKeptControlTypes)> kept_;
   std::vector<Message> gop_;  // latest keyframe + deltas since
   std::vector<std::weak_ptr<Subscriber>> subscribers_;  // those without a home()
   // Subscribers by home thread. Each list is copied on join and leave (rare)

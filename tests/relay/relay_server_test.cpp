@@ -113,6 +113,42 @@ TEST_F(RelayServerTest, LateJoinerGetsHelloAndTheLatestKeyframeAtOnce) {
   EXPECT_EQ(late.read().data, frame_bytes(45, false));
 }
 
+TEST_F(RelayServerTest, LateJoinerGetsTheLatestTeamsAndScoreRightAfterTheHello) {
+  start();
+  const std::string teams0 = R"({"left":{"name":""},"right":{"name":""},"seq":0,"type":"teams"})";
+  const std::string teams1 = R"({"left":{"name":"A"},"right":{"name":"B"},"seq":3,"type":"teams"})";
+  const std::string score0 = R"({"left":0,"right":0,"seq":0,"time":0,"type":"score"})";
+  const std::string score1 = R"({"left":0,"right":1,"seq":22,"time":11,"type":"score"})";
+  const std::string stamina = R"({"left":[],"right":[],"seq":20,"time":10,"type":"stamina"})";
+  const std::string goal = R"({"score":[0,1],"seq":22,"time":11,"type":"goal"})";
+  // Published in another order than a joiner gets them; events and stamina are not kept.
+  channel_->publish_control(score0);
+  channel_->publish_control(teams0);
+  for (int f = 0; f < 45; ++f) {
+    if (f == 3) channel_->publish_control(teams1);
+    if (f == 20) channel_->publish_control(stamina);
+    if (f == 22) channel_->publish_control(goal), channel_->publish_control(score1);
+    channel_->publish_frame(frame_bytes(f, f % 20 == 0), f % 20 == 0);
+  }
+  WsTestClient late(server_->port());
+  EXPECT_EQ(late.read().data, R"({"type":"hello"})");
+  auto m = late.read();
+  EXPECT_FALSE(m.binary);
+  EXPECT_EQ(m.data, teams1);
+  m = late.read();
+  EXPECT_FALSE(m.binary);
+  EXPECT_EQ(m.data, score1);
+  for (int f = 40; f < 45; ++f) EXPECT_EQ(late.read().data, frame_bytes(f, f == 40));
+
+  // A new hello (another game) forgets the old game's metadata.
+  channel_->set_hello(R"({"type":"hello","match_id":"next"})");
+  WsTestClient next(server_->port());
+  EXPECT_EQ(next.read().data, R"({"type":"hello","match_id":"next"})");
+  wait_for_subscribers(2);
+  channel_->publish_frame(frame_bytes(100, true), true);
+  EXPECT_EQ(next.read().data, frame_bytes(100, true));
+}
+
 TEST_F(RelayServerTest, StalledClientNeverDelaysOthersAndIsClosed) {
   // Room for ~8 frames: a healthy reader descheduled for a few ms on a busy
   // machine keeps up; the stalled one (9.6 MB behind) cannot.
