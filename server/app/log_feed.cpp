@@ -1,6 +1,8 @@
 #include "server/app/log_feed.hpp"
 
 #include <chrono>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "anim/animator.hpp"
@@ -19,7 +21,8 @@ namespace mc::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-// States between "stamina" messages: once a second at 10 Hz.
+// States between "stamina" messages: once a second at 10 Hz, so exactly
+// every 20 frames (proto/SPEC.md section 5.3).
 constexpr std::uint64_t kStaminaEveryStates = 10;
 
 std::uint64_t unix_ms() {
@@ -28,21 +31,36 @@ std::uint64_t unix_ms() {
       duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count());
 }
 
+// A team as the hello and "teams" messages show it. Broadcast convention:
+// a warm and a cold kit, readable from any camera.
+proto::TeamHello team_of(const TeamInfo& team, Side side) {
+  proto::TeamHello t;
+  t.name = team.name;
+  t.color = side == Side::Left ? "#d62828" : "#1d4ed8";
+  t.color2 = "#ffffff";
+  return t;
+}
+
 std::string make_hello(const WorldState& first, const GameParams& params, int keyframe_interval,
                        const std::string& match_id) {
   proto::Hello hello;
   hello.skeleton = anim::human_skeleton();
   hello.keyframe_interval = keyframe_interval;
   proto::fill_from_params(params, hello);
-  hello.left.name = first.left.name;
-  hello.right.name = first.right.name;
-  // Broadcast convention: a warm and a cold kit, readable from any camera.
-  hello.left.color = "#d62828";
-  hello.left.color2 = "#ffffff";
-  hello.right.color = "#1d4ed8";
-  hello.right.color2 = "#ffffff";
+  hello.left = team_of(first.left, Side::Left);
+  hello.right = team_of(first.right, Side::Right);
   hello.match_id = match_id;
   return proto::to_json(hello);
+}
+
+proto::ScoreUpdate score_of(const WorldState& state) {
+  proto::ScoreUpdate s;
+  s.time = state.time;
+  s.left = state.left.score;
+  s.right = state.right.score;
+  s.pen_left = state.left.pen_score;
+  s.pen_right = state.right.pen_score;
+  return s;
 }
 
 }  // namespace
@@ -162,13 +180,20 @@ bool LogFeed::play_once() {
   std::unique_ptr<anim::mocap::ReachMapPublisher> reach;
   if (config_.reach_model)
     reach = std::make_unique<anim::mocap::ReachMapPublisher>(config_.reach_model, config_.reach_every_states);
-  // Messages made from a state (reach maps, stamina) go out just before the
-  // first frame at or after the state's cycle, numbered like that frame.
-  std::vector<std::pair<int, proto::ControlMessage>> timed_pending;
+  // Messages made from a state (teams, score, stamina, reach maps) go out
+  // just before that state's first frame, seq 2 x index (the animator's
+  // numbering), numbered like it. Keyed by the frame, not by the cycle:
+  // during a stoppage many states share a cycle, and a message keyed by
+  // the cycle would leave with the first of them, frames early.
+  std::vector<std::pair<std::uint64_t, proto::ControlMessage>> timed_pending;
   const auto interval = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double, std::milli>(kFrameIntervalMs / config_.speed));
   auto deadline = Clock::now();
-  bool stamina_sent = false;
+  // The metadata last sent in this pass (teams and score go out with the
+  // pass's first state whatever they are, then when they change).
+  const std::uint64_t first_index = state.index;
+  std::optional<std::pair<std::string, std::string>> teams_sent;
+  std::optional<proto::ScoreUpdate> score_sent;
 
   // The director's track (issue 20): a state's cue is decided with the same
   // look-ahead as its frames, and goes out just before the frame it names,
@@ -192,7 +217,7 @@ bool LogFeed::play_once() {
       for (; next_event < events.size() && events[next_event].seq <= f.seq; ++next_event)
         publish_event(events[next_event], shift);
       std::size_t sent = 0;
-      for (; sent < timed_pending.size() && timed_pending[sent].first <= f.time; ++sent) {
+      for (; sent < timed_pending.size() && timed_pending[sent].first <= f.seq; ++sent) {
         proto::ControlMessage& m = timed_pending[sent].second;
         std::visit([&](auto& msg) { msg.seq = next_seq_; }, m);
         channel_->publish_control(proto::to_json(m));
@@ -242,14 +267,30 @@ bool LogFeed::play_once() {
   };
 
   do {
+    const std::uint64_t first_frame = 2 * state.index;  // the seq the animator gives its substep 0
+    // Metadata first, so that a spectator has the scoreboard before the
+    // picture: the teams (names; a team may connect late), the score (a
+    // goal, a penalty); the relay keeps the latest of each for joiners.
+    std::pair<std::string, std::string> names{state.left.name, state.right.name};
+    if (teams_sent != names) {
+      proto::TeamsUpdate t;
+      t.left = team_of(state.left, Side::Left);
+      t.right = team_of(state.right, Side::Right);
+      timed_pending.emplace_back(first_frame, std::move(t));
+      teams_sent = std::move(names);
+    }
+    const proto::ScoreUpdate score = score_of(state);
+    if (!score_sent || score.left != score_sent->left || score.right != score_sent->right ||
+        score.pen_left != score_sent->pen_left || score.pen_right != score_sent->pen_right) {
+      timed_pending.emplace_back(first_frame, score);
+      score_sent = score;
+    }
+    // Stamina once a second: with the pass's first state, then every 10th.
+    if ((state.index - first_index) % kStaminaEveryStates == 0)
+      timed_pending.emplace_back(first_frame, proto::stamina_update(state));
     if (reach) {
       proto::ReachMapUpdate m;
-      if (reach->push(state, source->params(), m)) timed_pending.emplace_back(m.time, std::move(m));
-    }
-    // Stamina once a second, and with the first state of each pass.
-    if (state.index % kStaminaEveryStates == 0 || !stamina_sent) {
-      timed_pending.emplace_back(state.time, proto::stamina_update(state));
-      stamina_sent = true;
+      if (reach->push(state, source->params(), m)) timed_pending.emplace_back(first_frame, std::move(m));
     }
     director.push(state, cues);
     animator.push(state, frames, &events);

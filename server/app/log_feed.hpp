@@ -5,6 +5,11 @@
 // published to a channel. A live feed that is lost and comes back is told to
 // spectators ("feed" messages); they stay connected meanwhile.
 //
+// Metadata (proto/SPEC.md section 5.3): before the first frame of each pass
+// the feed sends "teams" and "score", then again whenever they change (a
+// goal's "score" right after its "goal" event, on the same frame), and
+// "stamina" every 20 frames, on the first frame of every 10th state.
+//
 // This is the glue of the pipeline ingest -> anim -> proto -> relay; each
 // stage stays ignorant of the others.
 #pragma once
