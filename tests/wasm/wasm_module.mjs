@@ -62,7 +62,7 @@ export function runLog(mod, bytes, { chunk = 1 << 20, firstStep = 10, step = 200
       const o = mod._mc_output(s);
       const out = Buffer.from(mod.HEAPU8.slice(o, o + n));
       mod._mc_output_clear(s);
-      if (firstFrameMs === null && out.includes(0x6b)) firstFrameMs = performance.now() - t0;  // 'k'
+      if (firstFrameMs === null && records(out).some((x) => x.kind === 'k')) firstFrameMs = performance.now() - t0;
       parts.push(out);
     }
     if (r >= 2) break;

@@ -23,6 +23,7 @@ import { Codec, loadDecoder, readHello } from './net/codec.js';
 import { blendFrames } from './model/interp.js';
 import { Announcer } from './announcer.js';
 import { STATE } from './model/playmodes.js';
+import { LocalLogs } from './local/local_logs.js';
 
 const params = new URLSearchParams(location.search);
 const canvas = document.getElementById('view');
@@ -31,7 +32,7 @@ const hud = new Hud();
 const sound = new KickSound();
 const events = new Announcer(hud, sound);
 const buffer = new JitterBuffer({ delayFrames: Number(params.get('delay') ?? 3) });
-const timeshift = new TimeShift();
+let timeshift = new TimeShift();   // a LogPlayback (local/playback.js) once a log is opened
 
 let field = normalizeField({});
 let pitch = createPitch(field, stage.renderer);
@@ -220,11 +221,18 @@ if (!params.has('fixture')) {
     decoderError = e.message;
   }
 }
+// A log opened in the page (drop, button, ?log=URL) replaces the live feed.
+const local = new LocalLogs({
+  hud, applyHello, control: onControl,
+  makeCodec: (msg) => new Codec(decoderModule, msg),
+  useTimeshift: (pb) => { timeshift = pb; },
+  stopLive: () => { stream?.stop(); stream = null; serverReplay = null; connection = 'local'; },
+});
 if (params.has('fixture')) {
   const { startFixture } = await import('./dev/fixture.js');
   startFixture({ onHello: (h) => { applyHello(h); hud.status(null); }, onFrame: (f) => { counters.frames++; pushFrame(f); } });
   connection = 'open';
-} else {
+} else if (!(await local.takesOver(params))) {
   hud.status('Connecting to the match feed…');
   stream = startStream();
   if (recording) serverReplay = new ServerReplay(recording, (m) => stream.send(m));
@@ -310,6 +318,7 @@ const app = {
 bindControls(app, canvas);
 function showReplay() {
   if (serverReplay) { updateReplayBar(serverReplay.bar()); return; }
+  if (timeshift.bar) { updateReplayBar(timeshift.bar(hud.cyclesPerSecond)); return; }
   updateReplayBar({ available: timeshift.entries.length > 40, active: timeshift.active, paused: timeshift.paused,
     fraction: timeshift.fraction(), behindMs: timeshift.behindMs(), speed: timeshift.speed });
 }
@@ -371,7 +380,7 @@ function frameLoop(now) {
     lastBytes = bytes;
     lastStats = now;
     showReplay();
-    hud.stats({ fps: fpsWindow.length, kbps, delayMs: view?.serverTimeMs ? Date.now() - view.serverTimeMs : NaN,
+    hud.stats({ fps: fpsWindow.length, kbps, delayMs: view?.serverTimeMs && connection !== 'local' ? Date.now() - view.serverTimeMs : NaN,
       dropped: buffer.dropped + buffer.late + counters.decodeErrors + counters.skipped });
   }
 }
@@ -388,6 +397,7 @@ window.matchcast = Object.freeze({
     playMode: view?.playMode ?? null, selected, hello: !!match,
     teams: match ? [hud.teams[1].name, hud.teams[-1].name] : null,
     banner: hud.lastBanner ?? null, banners: hud.recentBanners ?? [], serverReplay: serverReplay?.state ?? null, lastControl,
+    local: local.stats(),
     timeshift: { active: timeshift.active, paused: timeshift.paused, pos: timeshift.pos, first: timeshift.first,
       last: timeshift.last, goals: [...timeshift.goals], bytes: timeshift.bytes, speed: timeshift.speed }, sounds: sound.played, renderMs, updateMs, scale: stage.scale,
   }),

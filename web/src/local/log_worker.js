@@ -115,9 +115,8 @@ async function run({ file, url, name, options = {} }) {
         chunk = await reader.read();
       } catch (err) {
         // A cut or corrupt gzip stream: play what came before it.
-        end(`the ${gzip ? 'gzip data' : 'data'} breaks off after ${mb(counter.raw)}` +
-          `${Number.isFinite(input.total) ? ` of the file's ${mb(input.total)}` : ''}` +
-          ` (${err?.message ?? 'read error'})`);
+        end(`the file's ${gzip ? 'gzip data ends' : 'data ends'} early, after ${mb(decoded)} of log` +
+          ` (${String(err?.message ?? 'read error').replace(/\.$/, '')})`);
         ended = true;
         break;
       }

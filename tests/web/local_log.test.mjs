@@ -1,0 +1,243 @@
+// The page as a static site (python3 -m http.server -d web, no Matchcast
+// server) opens logs by itself: the bundled game chosen in the file input
+// shows its first picture within a second, at the log's positions, and is
+// wholly animated within 5 s, with no WebSocket opened (screenshot
+// local-log.png). Then a v3 binary log, a JSON log dropped onto the page, a
+// random file, a cut .rcg.gz and a 2 GB file: each plays or gets its message.
+//
+// Needs web/wasm/ (scripts/build-wasm.sh); without it the test is skipped
+// (exit 77, ctest's SKIP_RETURN_CODE). MATCHCAST_LOCAL_FIRST_MS and
+// MATCHCAST_LOCAL_ALL_MS loosen the time limits (1000, 5000) on a machine
+// busier than the one they were set on.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { gunzipSync } from 'node:zlib';
+import { launchBrowser, REPO, RCG, shot, stats, waitFor, WEB_DIR } from './harness.mjs';
+
+if (!existsSync(path.join(WEB_DIR, 'wasm', 'matchcast-log.wasm'))) {
+  console.log('SKIPPED: web/wasm/ not built (scripts/build-wasm.sh)');
+  process.exit(77);
+}
+const FIRST_MS = Number(process.env.MATCHCAST_LOCAL_FIRST_MS ?? 1000);
+const ALL_MS = Number(process.env.MATCHCAST_LOCAL_ALL_MS ?? 5000);
+const GEN = path.join(REPO, 'tests', 'data', 'rcg', 'generated');
+const V3 = path.join(GEN, 'gen19-v3-20261122025631-Alpha_0-vs-Beta_1.rcg.gz');
+const JSONLOG = path.join(GEN, 'gen19-json-20261122030023-Alpha_1-vs-Beta_1.rcg.gz');
+
+// python3 -m http.server on a free port: resolves { url, stop() }.
+function staticServer(dir) {
+  const proc = spawn('python3', ['-u', '-m', 'http.server', '--bind', '127.0.0.1', '-d', dir, '0'],
+    { stdio: ['ignore', 'pipe', 'pipe'] });
+  return new Promise((resolve, reject) => {
+    const timer = setTimeout(() => { proc.kill('SIGKILL'); reject(new Error('http.server did not start')); }, 15000);
+    let out = '';
+    proc.stdout.on('data', (d) => {
+      out += d;
+      const m = /port (\d+)/.exec(out);
+      if (!m) return;
+      clearTimeout(timer);
+      resolve({ url: `http://127.0.0.1:${m[1]}/`, stop: () => proc.kill('SIGTERM') });
+    });
+    proc.on('exit', (code) => { clearTimeout(timer); reject(new Error(`http.server exited ${code}`)); });
+  });
+}
+
+// The n-th show of a text log: { 'l1': [x, y], ..., ball: [x, y] }.
+function showAt(logText, index) {
+  let at = -1;
+  for (let i = 0; i <= index; i++) {
+    at = logText.indexOf('\n(show ', at + 1);
+    if (at < 0) return null;
+  }
+  const line = logText.slice(at + 1, logText.indexOf('\n', at + 1));
+  const out = {};
+  const ball = /\(\(b\) ([-\d.e]+) ([-\d.e]+)/.exec(line);
+  out.ball = [Number(ball[1]), Number(ball[2])];
+  for (const m of line.matchAll(/\(\((l|r) (\d+)\) \d+ (\S+) ([-\d.e]+) ([-\d.e]+)/g)) {
+    out[`${m[1]}${m[2]}`] = [Number(m[4]), Number(m[5])];
+  }
+  return out;
+}
+
+// Drops bytes onto the page as a file, through a DataTransfer, as a user's drag would.
+async function dropFile(page, name, bytes) {
+  await page.evaluate(({ name, b64 }) => {
+    const bin = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+    const dt = new DataTransfer();
+    dt.items.add(new File([bin], name));
+    for (const type of ['dragenter', 'dragover', 'drop'])
+      window.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, { name, b64: Buffer.from(bytes).toString('base64') });
+}
+
+const local = async (page) => (await stats(page))?.local ?? null;
+const settled = (page, what, ms = 30000) => waitFor(page, async () => {
+  const l = await local(page);
+  return l && (l.phase === 'done' || l.phase === 'failed') ? l : null;
+}, what, ms);
+
+describe('the page as a static site opens logs itself', { timeout: 600000 }, () => {
+  let server, browser, page, ws = 0, errors = [], tmp;
+
+  before(async () => {
+    tmp = mkdtempSync(path.join(os.tmpdir(), 'matchcast-local-'));
+    server = await staticServer(WEB_DIR);
+    browser = await launchBrowser();
+    page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
+    page.setDefaultTimeout(20000);
+    page.on('websocket', () => ws++);
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(`${server.url}?fixed-quality&stats`);
+  });
+
+  after(async () => {
+    await browser?.close().catch(() => {});
+    server?.stop();
+    if (tmp) rmSync(tmp, { recursive: true, force: true });
+  });
+
+  test('no server: it says so and opens no WebSocket', async () => {
+    const text = await waitFor(page, async () => {
+      const t = await page.textContent('#status');
+      return /No live game here/.test(t ?? '') ? t : null;
+    }, 'the static-site message');
+    assert.match(text, /Drop a \.rcg/);
+    assert.equal((await local(page)).phase, 'static');
+    assert.equal(ws, 0);
+  });
+
+  test('the bundled game: first picture within 1 s at the log\'s positions, all animated within 5 s', async () => {
+    await page.setInputFiles('#log-open input', RCG);
+    const first = await waitFor(page, async () => {
+      const l = await local(page);
+      return l?.firstShownMs !== null && l?.firstShownMs !== undefined ? l : null;
+    }, 'the first picture', 20000, 20);
+    console.log(`first picture drawn ${first.firstShownMs.toFixed(0)} ms after the file was chosen ` +
+      `(module ready ${first.readyMs?.toFixed(0)} ms, first frames from the worker ${first.firstDataMs?.toFixed(0)} ms, ` +
+      `first frame to the renderer ${first.firstSampledMs?.toFixed(0)} ms)`);
+    assert.ok(first.firstShownMs <= FIRST_MS, `first picture after ${first.firstShownMs} ms (limit ${FIRST_MS})`);
+
+    const done = await settled(page, 'the whole game animated');
+    assert.equal(done.phase, 'done', JSON.stringify(done));
+    console.log(`whole game: ${done.status.states} states, ${done.frames} frames animated in ${done.endMs.toFixed(0)} ms`);
+    assert.equal(done.status.states, 6689);
+    assert.equal(done.frames, 13378);
+    assert.ok(done.endMs <= ALL_MS, `animated in ${done.endMs} ms (limit ${ALL_MS})`);
+
+    // Paused, the players stand where the log puts them at that state.
+    await page.click('#rp-play');
+    // Two pictures later the view is the paused playhead's.
+    const r0 = (await stats(page)).rendered;
+    const st = await waitFor(page, async () => {
+      const x = await stats(page);
+      return x.rendered > r0 + 1 ? x : null;
+    }, 'pictures after the pause');
+    assert.ok(st.timeshift.paused, 'paused');
+    const shown = await page.evaluate(() => window.matchcast.playerPositions());
+    const ball = await page.evaluate(() => window.matchcast.ball());
+    // Frame 2i is state i exactly, 2i+1 half-way to state i+1; the picture
+    // blends frames linearly, so at seq s the log's position is state i and
+    // i+1 mixed by s/2 - i.
+    const text = gunzipSync(readFileSync(RCG)).toString('latin1');
+    const i = Math.floor(st.seq / 2), f = st.seq / 2 - i;
+    const s0 = showAt(text, i), s1 = showAt(text, i + 1);
+    const at = (k) => [s0[k][0] + (s1[k][0] - s0[k][0]) * f, s0[k][1] + (s1[k][1] - s0[k][1]) * f];
+    const errs = shown.map((p) => {
+      const [x, y] = at(`${p.side === 1 ? 'l' : 'r'}${p.unum}`);
+      return Math.hypot(p.x - x, p.y - y);
+    }).sort((a, b) => a - b);
+    const [bx, by] = at('ball');
+    const ballErr = Math.hypot(ball.x - bx, ball.y - by);
+    console.log(`at seq ${st.seq.toFixed(2)} (cycle ${st.time}): ${shown.length} players, median ${errs[errs.length >> 1].toFixed(3)} m, ` +
+      `max ${errs[errs.length - 1].toFixed(3)} m from the log's positions; ball ${ballErr.toFixed(3)} m`);
+    assert.equal(shown.length, 22);
+    assert.ok(errs[errs.length >> 1] < 0.05 && errs[errs.length - 1] < 0.3, `positions: ${errs}`);
+    assert.ok(ballErr < 0.3, `ball ${ballErr}`);
+
+    // The replay bar works on it: seek to the middle, next goal.
+    await page.evaluate(() => { const s = document.getElementById('rp-seek'); s.value = '500'; s.dispatchEvent(new Event('input')); });
+    const mid = await waitFor(page, async () => {
+      const x = await stats(page);
+      return x.time > 2500 ? x : null;
+    }, 'the picture at the middle of the game');
+    assert.ok(mid.time > 2500 && mid.time < 3500, `seek to the middle: cycle ${mid.time}`);
+    // Next goal: 5 s before it, playing (at 4x: software rendering on a
+    // busy machine draws few pictures a second); its banner comes.
+    await page.click('#rp-next-goal');
+    const jumped = await stats(page);
+    const goal = jumped.timeshift.goals.find((g) => g > mid.seq);
+    assert.ok(Math.abs(jumped.timeshift.pos - (goal - 100)) < 2, `next goal: at ${jumped.timeshift.pos}, goal at ${goal}`);
+    if (jumped.timeshift.paused) await page.click('#rp-play');
+    await page.selectOption('#rp-speed', '4');
+    await waitFor(page, async () => ((await stats(page)).banners ?? []).some((b) => /GOAL/.test(b.text)), 'a goal banner', 60000);
+    await page.screenshot({ path: shot('local-log') });
+    assert.equal(ws, 0, 'no WebSocket');
+    assert.deepEqual(errors, []);
+  });
+
+  test('a v3 binary log plays', async () => {
+    await page.setInputFiles('#log-open input', V3);
+    const l = await settled(page, 'the v3 log');
+    assert.equal(l.phase, 'done', JSON.stringify(l));
+    assert.equal(l.status.format, 'v3 binary');
+    assert.equal(l.status.states, 649);
+    await waitFor(page, async () => ((await stats(page)).seq ?? -1) >= 0, 'a v3 picture');
+  });
+
+  test('a JSON log dropped onto the page plays', async () => {
+    await dropFile(page, 'game.json.rcg.gz', readFileSync(JSONLOG));
+    const l = await settled(page, 'the JSON log');
+    assert.equal(l.phase, 'done', JSON.stringify(l));
+    assert.equal(l.name, 'game.json.rcg.gz');
+    assert.match(l.status.format, /JSON/);
+    assert.equal(l.status.states, 699);
+  });
+
+  test('a random file gets its message', async () => {
+    const junk = Buffer.alloc(300000);
+    for (let i = 0; i < junk.length; i++) junk[i] = (i * 2654435761) >>> 24;
+    junk[0] = 0x50;
+    await dropFile(page, 'holiday.jpg', junk);
+    const l = await settled(page, 'the random file');
+    assert.equal(l.phase, 'failed');
+    assert.match(await page.textContent('#status'), /not a game log/);
+  });
+
+  test('a cut .rcg.gz plays up to the cut and says where', async () => {
+    const gz = readFileSync(RCG);
+    const cut = path.join(tmp, 'cut.rcg.gz');
+    writeFileSync(cut, gz.subarray(0, Math.floor(gz.length * 0.4)));
+    await page.setInputFiles('#log-open input', cut);
+    const l = await settled(page, 'the cut log');
+    assert.equal(l.phase, 'done', JSON.stringify(l));
+    assert.ok(l.frames > 1000, `${l.frames} frames before the cut`);
+    const note = await page.textContent('#log-note');
+    console.log(`cut log: ${note}`);
+    assert.match(note, /cut off/);
+    assert.match(note, new RegExp(`plays up to cycle ${l.status.time}`));
+    assert.ok(l.status.time > 1000 && l.status.time < 4000, `cut at cycle ${l.status.time}`);
+    await page.screenshot({ path: shot('local-log-cut') });
+  });
+
+  test('a 2 GB file is refused at once', async () => {
+    await page.evaluate(() => {
+      // 2 GiB made of one 1 MiB blob referenced 2048 times: no 2 GB in memory.
+      const mib = new Blob([new Uint8Array(1 << 20)]);
+      const dt = new DataTransfer();
+      dt.items.add(new File(new Array(2048).fill(mib), 'huge.rcg'));
+      window.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+    });
+    const l = await settled(page, 'the 2 GB file', 10000);
+    assert.equal(l.phase, 'failed');
+    assert.match(await page.textContent('#status'), /2\.1 GB: far more than a game log/);
+    // The page is still alive and can open a log again.
+    await page.setInputFiles('#log-open input', V3);
+    assert.equal((await settled(page, 'a log after the refusal')).phase, 'done');
+    assert.equal(ws, 0);
+    assert.deepEqual(errors, []);
+  });
+});
