@@ -23,6 +23,36 @@ constexpr std::size_t kReadChunk = 16 * 1024;
 constexpr std::size_t kTlsReadBuffer = 16 * 1024;
 }  // namespace
 
+// Sessions of this I/O thread that have messages queued and no write in
+// flight. They are written together by one task at the end of the loop
+// turn, so messages published back to back (a kick, a stamina update, a
+// director cue and the frame) leave in one write per spectator, not one
+// each. Valid because every session's io_context runs on one thread.
+struct WebSocketSession::FlushList {
+  std::vector<std::shared_ptr<WebSocketSession>> sessions;
+  bool posted = false;
+};
+thread_local WebSocketSession::FlushList WebSocketSession::flush_list_;
+
+void WebSocketSession::schedule_flush() {
+  flush_pending_ = true;
+  flush_list_.sessions.push_back(shared_from_this());
+  if (flush_list_.posted) return;
+  flush_list_.posted = true;
+  net::post(link_.get_executor(), [] {
+    auto sessions = std::move(flush_list_.sessions);
+    flush_list_.sessions.clear();
+    flush_list_.posted = false;
+    for (auto& s : sessions) {
+      s->flush_pending_ = false;
+      if (!s->writing_) s->write_next();
+    }
+    // Keep the vector's room for the next turn.
+    sessions.clear();
+    if (flush_list_.sessions.empty()) flush_list_.sessions.swap(sessions);
+  });
+}
+
 // A session's subscription to one channel. A new tap per switch: deliveries
 // from a channel the session has left carry an old epoch and are ignored.
 class WebSocketSession::Tap : public Subscriber {
@@ -282,7 +312,7 @@ void WebSocketSession::enqueue(Message m) {
   if (!open_ || closing_) return;
   queue_.push(std::move(m));
   account_queue();
-  if (!writing_) write_next();
+  if (!writing_ && !flush_pending_) schedule_flush();
 }
 
 void WebSocketSession::write_next() {

@@ -68,6 +68,9 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
 
  private:
   class Tap;
+  struct FlushList;
+  static thread_local FlushList flush_list_;
+  void schedule_flush();
 
   void start_read();
   void on_readable(boost::system::error_code ec);
@@ -122,6 +125,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   std::chrono::steady_clock::time_point window_start_{};
   int window_messages_ = 0;
   bool writing_ = false;
+  bool flush_pending_ = false;  // in this thread's flush list
   bool pong_queued_ = false; // a pong waits in the queue: further pings need no other
   bool open_ = false;        // subscribed: takes messages
   bool shifted_ = false;     // replay_ is a time shift of live_
