@@ -248,13 +248,32 @@ void Renderer::draw(const PoseFrame& frame, const proto::Hello& hello, const Pla
 
   for (const auto& g : goals_) draw_mesh(cube_, g.model, g.color);
 
+  const std::string skeleton_key = model.skeleton().name + "/" + std::to_string(model.skeleton().joints.size());
+  if (skeleton_key != body_skeleton_) {
+    body_skeleton_ = skeleton_key;
+    bodies_.set_skeleton(model.skeleton());
+  }
   for (int i = 0; i < kMaxPlayers; ++i) {
     const PlayerPose& p = frame.players[i];
     if (!player_visible(p) || i == hidden_slot) continue;
     if (!model.joints(p, joints_)) continue;
-    model.segments(joints_, segments_);
     const Kit kit = team_kit(p.side == Side::Right ? hello.right : hello.left, p.side,
                              (p.state & state_bits::kGoalie) != 0);
+    if (bodies_.ready()) {
+      // The skinned body, in scene space; its numbers when near.
+      const bool far = glm::length(camera.eye() - to_scene(p.x, p.y, p.z)) > kBodyFarMetres;
+      glUniformMatrix4fv(u_mvp_, 1, GL_FALSE, glm::value_ptr(view_proj_));
+      glUniformMatrix4fv(u_model_, 1, GL_FALSE, glm::value_ptr(identity));
+      glUniform1f(u_use_tint_, 0.0f);
+      glUniform1f(u_alpha_, 1.0f);
+      glUniform1f(u_lit_, 1.0f);
+      bodies_.draw_body(p, joints_, kit, far);
+      if (!far && p.unum > 0 && p.unum < 100)
+        bodies_.draw_numbers(p, joints_, kit,
+                             [&](const gl::Mesh& m, const glm::mat4& at, glm::vec3 ink) { draw_mesh(m, at, ink); });
+      continue;
+    }
+    model.segments(joints_, segments_);
     for (const auto& s : segments_) draw_mesh(s.sphere ? sphere_ : cube_, s.model, kit.color(s.part));
     const int chest = model.chest_joint();
     if (chest >= 0 && p.unum > 0 && p.unum < 100)

@@ -15,6 +15,7 @@
 
 #include "proto/hello.hpp"
 #include "proto/pose_frame.hpp"
+#include "viewer/body_renderer.hpp"
 #include "viewer/camera.hpp"
 #include "viewer/gl_util.hpp"
 #include "viewer/pitch_geometry.hpp"
@@ -55,6 +56,9 @@ class Renderer {
   std::vector<SegmentInstance> segments_;
   std::map<int, std::unique_ptr<gl::Mesh>> numbers_;
   std::array<float, 6> numbers_chest_{};  // the chest size and centre the numbers were built for
+  // Smooth skinned bodies for the server's skeleton (issue 20); boxes otherwise.
+  BodyRenderer bodies_;
+  std::string body_skeleton_;  // the skeleton the bodies were built for
 };
 
 }  // namespace mc::viewer

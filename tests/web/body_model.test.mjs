@@ -69,3 +69,38 @@ test('the drawn head follows the stream at human speed; the rest of the body is 
   a = h.apply('-1:4', frame(45, 0), 1 / 60);
   assert.equal(a[NECK_YAW], 45, 'first sight: as the stream says');
 });
+
+const { buildBodyGeometry, meshSummary, restPositions, tonesOf } = await load('src/model/body_geometry.js');
+import fs from 'node:fs';
+const readJson = (rel) => JSON.parse(fs.readFileSync(path.resolve(import.meta.dirname, rel), 'utf8'));
+
+test('the body is generated from its description, the same as the viewer makes it', () => {
+  const spec = JSON.parse(fs.readFileSync(path.join(WEB, 'assets/body.json'), 'utf8'));
+  const human = normalizeSkeleton(readJson('data/human_skeleton.json'));
+  const golden = readJson('data/body_summary.json');   // viewer_BodyMesh.* checks the C++ generator against it
+  for (const lod of [0, 1]) {
+    const m = buildBodyGeometry(spec, human, lod);
+    assert.ok(m, `level ${lod}`);
+    assert.deepEqual(meshSummary(m), golden[lod], `level ${lod} as the viewer's`);
+    // Every vertex's weights sum to 1, on joints of the skeleton.
+    for (let i = 0; i < m.vertexCount; i++) {
+      assert.ok(Math.abs(m.skinWeight[4 * i] + m.skinWeight[4 * i + 1] - 1) < 1e-6);
+      assert.ok(m.skinIndex[4 * i] < human.joints.length && m.skinIndex[4 * i + 1] < human.joints.length);
+    }
+    assert.ok(m.index.every((v) => v < m.vertexCount), 'every index is a vertex');
+  }
+  const near = buildBodyGeometry(spec, human, 0), far = buildBodyGeometry(spec, human, 1);
+  assert.ok(far.index.length < near.index.length / 2, 'the far level has under half the triangles');
+  // Standing: soles on the grass (the pelvis 1.00 m up), the head at ~1.84 m.
+  const s = meshSummary(near);
+  assert.ok(Math.abs(s.min[1] + 1.0) < 0.01 && Math.abs(s.max[1] - 0.84) < 0.03, JSON.stringify(s));
+  // Every region is used: kit, skin, hair, boots.
+  assert.deepEqual([...new Set(near.region)].sort(), [0, 1, 2, 3, 4, 5]);
+  // Another skeleton (the golden vectors' test humanoid): no body, the page draws boxes.
+  const other = normalizeSkeleton({ joints: [{ name: 'root', parent: -1, dofs: 'y' }] });
+  assert.equal(buildBodyGeometry(spec, other, 0), null);
+  assert.deepEqual(restPositions(human)[2].map((v) => Math.round(v * 100) / 100), [0, 0.52, 0], 'the neck at rest');
+  // Tones: fixed per player, and not all the same.
+  assert.deepEqual(tonesOf(spec, 1, 9), tonesOf(spec, 1, 9));
+  assert.ok(new Set(Array.from({ length: 11 }, (_, u) => tonesOf(spec, -1, u + 1).skin)).size >= 3);
+});

@@ -15,7 +15,13 @@ describe('the director on the page', { timeout: 240000 }, () => {
   let server, browser, page;
   const errors = [];
   const director = async () => (await stats(page))?.director ?? null;
-  const snap = (name) => page.screenshot({ path: shot(`director-${name}`) });
+  // Named after the shot on screen when the picture is taken (a slow
+  // machine may take it a moment after the state the test waited for).
+  const snap = async (name) => {
+    const d = await director();
+    const now = (d?.replaying ? `replay-${d.angle}` : d?.shot)?.replaceAll('_', '-');
+    await page.screenshot({ path: shot(`director-${name}${now && !name.includes(now) ? `-showing-${now}` : ''}`) });
+  };
 
   // The operator's feed control (POST /control/feed/stop|start).
   const TOKEN = 'director-test';
@@ -158,6 +164,31 @@ describe('the director on the page', { timeout: 240000 }, () => {
     s = await stats(page);
     assert.ok(await page.$eval('[data-camera="director"]', (b) => b.classList.contains('on')), 'its button is lit');
     await snap('back-to-director');
+    assert.deepEqual(errors, []);
+  });
+
+  test('the bodies: close-ups of players running and kicking; far players at the low level of detail', async () => {
+    // The top-down view: every player is far.
+    await page.keyboard.press('7');
+    await waitFor(page, async () => (await stats(page)).camera === 'top', 'top-down', 5000);
+    await page.waitForTimeout(500);
+    const top = await waitFor(page, async () => {
+      const b = (await stats(page)).bodies;
+      return b && b.far + b.near === 22 ? b : null;
+    }, '22 bodies', 10000);
+    assert.equal(top.boxes, 0, 'skinned bodies, not boxes');
+    assert.ok(top.far >= 20, `far players use the low level: ${JSON.stringify(top)}`);
+    // Beside the player nearest the ball, a few moments apart.
+    await page.evaluate(() => window.matchcast.select(null));
+    await page.keyboard.press('8');
+    await waitFor(page, async () => (await stats(page)).camera === 'closeup', 'the close-up', 5000);
+    for (let i = 0; i < 3; i++) {
+      await page.waitForTimeout(700);
+      await page.screenshot({ path: shot(`bodies-closeup-${i}`) });
+    }
+    const near = (await stats(page)).bodies;
+    assert.ok(near.near >= 1, `the player beside the camera at the high level: ${JSON.stringify(near)}`);
+    await page.keyboard.press('0');
     assert.deepEqual(errors, []);
   });
 });

@@ -13,6 +13,7 @@ export const CAMERA_MODES = [
   { id: 'follow', key: '5', label: 'Follow' },
   { id: 'goal', key: '6', label: 'Goal line' },
   { id: 'top', key: '7', label: 'Top-down' },
+  { id: 'closeup', key: '8', label: 'Close-up' },
 ];
 
 const DEG = Math.PI / 180;
@@ -164,6 +165,18 @@ export class Cameras {
           this.goal.copy(p).addScaledVector(dir, -7).setY(3.5);
           this.lookGoal.copy(p).addScaledVector(dir, 5).setY(0.8);
           this.fovGoal = 50;
+        } else this._overview(aspect);
+        break;
+      }
+      case 'closeup': {
+        // Beside the chosen player, from the main stand's side at chest
+        // height: his body, his kicks. (His heading turns too often to
+        // hang the camera on it.)
+        if (pose) {
+          this.goal.set(pose.x - 1.2, 1.35, pose.y + 4.6);
+          this.lookGoal.set(pose.x, 0.8, pose.y);
+          this.fovGoal = aspect < 1 ? 55 : 38;
+          this.snap = true;   // held on him: his interpolated pose is smooth already
         } else this._overview(aspect);
         break;
       }

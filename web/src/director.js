@@ -125,8 +125,10 @@ export function shotRig(ctx) {
         return { pos: [bx - g * 3, 1.3, z], look: [bx, 0.6, by], fov: clamp(2 * Math.atan(9 / d) / DEG, 14, 50) };
       }
       if (ctx.angle === 'high') return { pos: [bx, 38, halfW + 45], look: [bx, 0, by * 0.5], fov: 34 };
-      // Behind the goal, above the crossbar, looking out at the play.
-      return { pos: [gx + g * 7, 4.2, clamp(by * 0.15, -3, 3)], look: [bx, 0.4, by], fov: 48 };
+      // Behind the goal, above the crossbar, a little towards the ball's
+      // side, looking out along the pitch at the ball and the goalmouth.
+      return { pos: [gx + g * 8, 5.5, clamp(by * 0.35, -8, 8)],
+        look: [bx + (gx - bx) * 0.3, 0.5, by * 0.65], fov: portrait ? 62 : 50 };
     }
     case 'tracking':
     default: {

@@ -259,7 +259,7 @@ function select(key) {
 
 const app = {
   setCamera(id) {
-    if ((id === 'player' || id === 'follow') && !selected) select(nearestToBall());
+    if ((id === 'player' || id === 'follow' || id === 'closeup') && !selected) select(nearestToBall());
     cameras.setMode(id);
     director.setEnabled(cameras.mode === 'director');
     markCamera(cameras.mode);
@@ -391,7 +391,7 @@ requestAnimationFrame(frameLoop);
 window.matchcast = Object.freeze({
   stats: () => ({
     ...counters, ...events.counts, connection, connects: stream?.connects ?? 0, camera: cameras.mode,
-    director: director.stats(),
+    director: director.stats(), bodies: players?.lodCounts() ?? null,
     buffered: buffer.size, dropped: buffer.dropped, late: buffer.late, resyncs: buffer.resyncs,
     fps: fpsWindow.length, kbps, seq: view?.seq ?? null, time: view?.time ?? null,
     playMode: view?.playMode ?? null, selected, hello: !!match,

@@ -1,5 +1,6 @@
-// Players: the skeleton definition becomes a hierarchy of joint nodes with
-// one box or sphere per joint; a pose becomes the joint transforms.
+// Players: the skeleton definition becomes a hierarchy of joint nodes (the
+// bones of a skinned body, scene/body_mesh.js; for another skeleton, one box
+// or sphere per joint); a pose becomes the joint transforms.
 //
 // Per player: root node at (x, z, y) turned by -heading about +Y (field to
 // scene, rcss-protocol.md section 1), then the joints with
@@ -11,6 +12,7 @@ import { findJoint, partOf } from '../model/skeleton.js';
 import { STATE } from '../model/playmodes.js';
 import { makeKit, numberTexture, contrastColor } from './kit.js';
 import { HeadSmoother } from '../model/neck.js';
+import { BodyFactory } from './body_mesh.js';
 
 const DEG = Math.PI / 180;
 const AXES = { x: new THREE.Vector3(1, 0, 0), y: new THREE.Vector3(0, 1, 0), z: new THREE.Vector3(0, 0, 1) };
@@ -57,6 +59,8 @@ export class Players {
     this.hiddenKey = null;       // first-person view hides this player's head
     // Heads turn at human speed where they are drawn (model/neck.js).
     this.heads = new HeadSmoother(skel);
+    // Smooth skinned bodies for the server's skeleton; boxes otherwise.
+    this.bodies = BodyFactory.for(skel);
     this.lastUpdate = null;
 
     const ringGeo = new THREE.RingGeometry(0.55, 0.7, 40);
@@ -71,7 +75,8 @@ export class Players {
   dispose() {
     this.scene.remove(this.group);
     this.scene.remove(this.ring);
-    this.group.traverse((o) => { if (o.isMesh) o.geometry.dispose(); });
+    this.group.traverse((o) => { if (o.isMesh && !o.isSkinnedMesh) o.geometry.dispose(); });
+    for (const rig of this.rigs.values()) rig.body?.dispose();
   }
 
   _buildRig(side, unum, goalie) {
@@ -81,7 +86,7 @@ export class Players {
     const nodes = [];
     const key = `${side}:${unum}`;
     this.skel.joints.forEach((j, i) => {
-      const node = new THREE.Group();
+      const node = new THREE.Bone();
       if (i > 0) node.position.fromArray(j.offset);
       (i === 0 ? root : nodes[j.parent]).add(node);
       nodes.push(node);
@@ -94,13 +99,20 @@ export class Players {
       const mesh = new THREE.Mesh(geo, mats[partOf(j.name)] ?? mats.shirt);
       mesh.position.fromArray(s.center);
       mesh.castShadow = true;
+      // With a body the boxes are not drawn; they stay for picking.
+      mesh.visible = !this.bodies;
       mesh.userData.playerKey = key;
       mesh.userData.joint = i;
       node.add(mesh);
       this.pickables.push(mesh);
     });
+    let body = null;
+    if (this.bodies) {
+      body = this.bodies.make(root, nodes, { shirt: mats.shirt.color, shorts: mats.shorts.color, sock: mats.sock.color },
+        side, unum, goalie);
+    }
     // Shirt numbers on the back and the front of the chest.
-    if (this.chest >= 0) {
+    if (!body && this.chest >= 0) {
       const s = this.skel.joints[this.chest].segment;
       const shirt = goalie ? kit.goalieColor : kit.shirtColor;
       const tex = numberTexture(unum, contrastColor(shirt));
@@ -122,7 +134,7 @@ export class Players {
     label.scale.set(LABEL_SIZE, LABEL_SIZE, 1);
     label.renderOrder = 10;
     this.group.add(root, label);
-    return { key, side, unum, goalie, root, nodes, label, visible: true, pose: null };
+    return { key, side, unum, goalie, root, nodes, label, body, visible: true, pose: null };
   }
 
   // The rig for a player, rebuilt when its role (goalie or not) changes.
@@ -132,6 +144,7 @@ export class Players {
     let rig = this.rigs.get(key);
     if (rig && rig.goalie !== goalie) {
       this.group.remove(rig.root, rig.label);
+      rig.body?.dispose();
       this.pickables = this.pickables.filter((m) => m.userData.playerKey !== key);
       rig = null;
     }
@@ -213,6 +226,18 @@ export class Players {
     rig.root.updateWorldMatrix(true, true);
     rig.root.visible = wasVisible;
     return rig.nodes[this.headJoint].matrixWorld;
+  }
+
+  // How many drawn bodies are at each level of detail: { near, far, boxes }.
+  lodCounts() {
+    const out = { near: 0, far: 0, boxes: 0 };
+    for (const rig of this.rigs.values()) {
+      if (!rig.root.visible) continue;
+      if (!rig.body) out.boxes++;
+      else if (rig.body.lod.getCurrentLevel() === 0) out.near++;
+      else out.far++;
+    }
+    return out;
   }
 
   get(key) { return this.rigs.get(key) ?? null; }
