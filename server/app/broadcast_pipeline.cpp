@@ -85,6 +85,11 @@ std::string make_hello(const WorldState& first, const GameParams& params, int ke
 
 BroadcastPipeline::BroadcastPipeline(const GameParams& params, PipelineOptions options, std::uint32_t first_seq)
     : animator_(anim::human_skeleton(), params, options.anim),
+      director_([&] {
+        director::DirectorConfig d;
+        d.lookahead_states = options.anim.lookahead_cycles;  // a cue is decided when its frames leave
+        return d;
+      }()),
       encoder_(anim::human_skeleton(), proto::EncoderOptions{options.keyframe_interval}),
       next_seq_(first_seq) {}
 
@@ -125,11 +130,13 @@ void BroadcastPipeline::push(const WorldState& state) {
   // Then what the caller added for this state (a reach map).
   for (proto::ControlMessage& m : extra_) timed_.emplace_back(2 * state.index, std::move(m));
   extra_.clear();
+  director_.push(state, cues_);
   animator_.push(state, frames_, &events_);
 }
 
 void BroadcastPipeline::finish() {
   compact();
+  director_.finish(cues_);
   animator_.finish(frames_, &events_);
 }
 
@@ -151,6 +158,12 @@ void BroadcastPipeline::emit_next(std::uint64_t server_time_ms, PipelineSink& si
     std::visit([&](auto& msg) { msg.seq = next_seq_; }, m);
     sink.control(proto::to_json(m));
   }
+  // The director's cues last, just before the frame they name.
+  for (; next_cue_ < cues_.size() && cues_[next_cue_].seq <= f.seq; ++next_cue_) {
+    proto::ControlMessage m{cues_[next_cue_]};
+    proto::shift_frames(m, shift);
+    sink.control(proto::to_json(m));
+  }
   f.seq = next_seq_++;
   f.server_time_ms = server_time_ms;
   bool key = false;
@@ -169,6 +182,8 @@ void BroadcastPipeline::compact() {
   next_event_ = 0;
   timed_.erase(timed_.begin(), timed_.begin() + static_cast<std::ptrdiff_t>(next_timed_));
   next_timed_ = 0;
+  cues_.erase(cues_.begin(), cues_.begin() + static_cast<std::ptrdiff_t>(next_cue_));
+  next_cue_ = 0;
 }
 
 }  // namespace mc::app

@@ -14,7 +14,9 @@
 //    (seq 2 x index in the animator's numbering): "teams" with the pass's
 //    first state and whenever a name changes, "score" likewise, "stamina"
 //    with the first state and every 10th state after it (once a second),
-//    and whatever the caller adds with add_state_message() (reach maps).
+//    and whatever the caller adds with add_state_message() (reach maps);
+//  * the director's cues (server/director, SPEC.md 5.5) for that frame,
+//    decided with the animator's look-ahead, renumbered like the frame.
 #pragma once
 
 #include <cstdint>
@@ -32,6 +34,7 @@
 #include "proto/game_params.hpp"
 #include "proto/pose_frame.hpp"
 #include "proto/world_state.hpp"
+#include "server/director/director.hpp"
 
 namespace mc::app {
 
@@ -100,6 +103,7 @@ class BroadcastPipeline {
   void compact();
 
   anim::Animator animator_;
+  director::Director director_;
   proto::FrameEncoder encoder_;
   std::uint32_t next_seq_;
   std::uint64_t emitted_ = 0;
@@ -111,6 +115,8 @@ class BroadcastPipeline {
   std::vector<std::pair<std::uint64_t, proto::ControlMessage>> timed_;
   std::size_t next_timed_ = 0;
   std::vector<proto::ControlMessage> extra_;  // add_state_message() for the next push
+  std::vector<proto::DirectorCue> cues_;      // animator numbering, in order
+  std::size_t next_cue_ = 0;
   // What this pass has announced so far.
   bool first_state_ = true;
   std::uint64_t first_index_ = 0;

@@ -1,19 +1,12 @@
 #include "server/app/log_feed.hpp"
 
 #include <chrono>
-#include <optional>
-#include <utility>
 #include <vector>
 
-#include "anim/animator.hpp"
-#include "anim/event_messages.hpp"
-#include "anim/human_skeleton.hpp"
 #include "anim/mocap/reach_map_publisher.hpp"
 #include "proto/control_messages.hpp"
-#include "proto/frame_codec.hpp"
-#include "proto/hello.hpp"
 #include "proto/match_id.hpp"
-#include "server/director/director.hpp"
+#include "server/app/broadcast_pipeline.hpp"
 #include "server/ingest/state_source.hpp"
 #include "server/relay/log.hpp"
 
@@ -21,46 +14,11 @@ namespace mc::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-// States between "stamina" messages: once a second at 10 Hz, so exactly
-// every 20 frames (proto/SPEC.md section 5.3).
-constexpr std::uint64_t kStaminaEveryStates = 10;
 
 std::uint64_t unix_ms() {
   using namespace std::chrono;
   return static_cast<std::uint64_t>(
       duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count());
-}
-
-// A team as the hello and "teams" messages show it. Broadcast convention:
-// a warm and a cold kit, readable from any camera.
-proto::TeamHello team_of(const TeamInfo& team, Side side) {
-  proto::TeamHello t;
-  t.name = team.name;
-  t.color = side == Side::Left ? "#d62828" : "#1d4ed8";
-  t.color2 = "#ffffff";
-  return t;
-}
-
-std::string make_hello(const WorldState& first, const GameParams& params, int keyframe_interval,
-                       const std::string& match_id) {
-  proto::Hello hello;
-  hello.skeleton = anim::human_skeleton();
-  hello.keyframe_interval = keyframe_interval;
-  proto::fill_from_params(params, hello);
-  hello.left = team_of(first.left, Side::Left);
-  hello.right = team_of(first.right, Side::Right);
-  hello.match_id = match_id;
-  return proto::to_json(hello);
-}
-
-proto::ScoreUpdate score_of(const WorldState& state) {
-  proto::ScoreUpdate s;
-  s.time = state.time;
-  s.left = state.left.score;
-  s.right = state.right.score;
-  s.pen_left = state.left.pen_score;
-  s.pen_right = state.right.pen_score;
-  return s;
 }
 
 }  // namespace
@@ -127,14 +85,6 @@ bool LogFeed::wait_until(Clock::time_point deadline) {
   return !wake_.wait_until(lock, deadline, [this] { return stopping_; });
 }
 
-void LogFeed::publish_event(const anim::AnimEvent& event, std::int64_t shift) {
-  // A card event without a card says nothing to a spectator.
-  if (event.type == anim::AnimEventType::Card && event.card == anim::Card::None) return;
-  proto::ControlMessage m = anim::to_control_message(event);
-  proto::shift_frames(m, shift);
-  channel_->publish_control(proto::to_json(m));
-}
-
 void LogFeed::announce_feed(bool lost, const std::string& detail) {
   channel_->set_feed_state(lost ? relay::FeedState::Lost : relay::FeedState::Live);
   proto::FeedStatus status;
@@ -171,75 +121,42 @@ bool LogFeed::play_once() {
     if (!source->next(state)) return wait_until(Clock::now() + std::chrono::seconds(1));
   }
 
-  anim::Animator animator(anim::human_skeleton(), source->params(), config_.anim);
-  proto::FrameEncoder encoder(anim::human_skeleton(),
-                              proto::EncoderOptions{config_.keyframe_interval});
-  std::vector<PoseFrame> frames;
-  std::vector<anim::AnimEvent> events;
-  std::size_t next_event = 0;
+  // ingest -> anim -> proto (broadcast_pipeline.hpp, the same code as the
+  // page's WebAssembly module); this feed paces it and stamps real times.
+  PipelineOptions options;
+  options.keyframe_interval = config_.keyframe_interval;
+  options.anim = config_.anim;
+  BroadcastPipeline pipeline(source->params(), options, next_seq_);
   std::unique_ptr<anim::mocap::ReachMapPublisher> reach;
   if (config_.reach_model)
     reach = std::make_unique<anim::mocap::ReachMapPublisher>(config_.reach_model, config_.reach_every_states);
-  // Messages made from a state (teams, score, stamina, reach maps) go out
-  // just before that state's first frame, seq 2 x index (the animator's
-  // numbering), numbered like it. Keyed by the frame, not by the cycle:
-  // during a stoppage many states share a cycle, and a message keyed by
-  // the cycle would leave with the first of them, frames early.
-  std::vector<std::pair<std::uint64_t, proto::ControlMessage>> timed_pending;
   const auto interval = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double, std::milli>(kFrameIntervalMs / config_.speed));
   auto deadline = Clock::now();
-  // The metadata last sent in this pass (teams and score go out with the
-  // pass's first state whatever they are, then when they change).
-  const std::uint64_t first_index = state.index;
-  std::optional<std::pair<std::string, std::string>> teams_sent;
-  std::optional<proto::ScoreUpdate> score_sent;
 
-  // The director's track (issue 20): a state's cue is decided with the same
-  // look-ahead as its frames, and goes out just before the frame it names,
-  // after that frame's other messages, renumbered like it.
-  director::DirectorConfig director_config;
-  director_config.lookahead_states = config_.anim.lookahead_cycles;
-  director::Director director(director_config);
-  std::vector<proto::DirectorCue> cues;
+  struct ToChannel : PipelineSink {
+    LogFeed& feed;
+    explicit ToChannel(LogFeed& f) : feed(f) {}
+    void control(std::string json) override { feed.channel_->publish_control(std::move(json)); }
+    void frame(std::string bytes, bool key) override {
+      feed.channel_->publish_frame(std::move(bytes), key);
+      ++feed.frames_;
+    }
+  } sink(*this);
 
-  auto publish = [&](std::vector<PoseFrame>& batch) {
-    for (PoseFrame& f : batch) {
+  // Each waiting frame at its time, its messages just before it.
+  auto publish = [&]() {
+    while (pipeline.has_frame()) {
       deadline += interval;
       // After a stall (a suspended process, a slow disk, a live feed that
       // paused) do not rush to catch up: resume at the normal pace from now.
       // A live server paces itself; this only spreads its two frames.
       if (Clock::now() - deadline > (live_ ? interval : std::chrono::seconds(1))) deadline = Clock::now();
       if (!wait_until(deadline)) return false;
-      // Sequence numbers continue across loops so that clients see no gap;
-      // a frame's events go out just before it, renumbered the same way.
-      const std::int64_t shift = static_cast<std::int64_t>(next_seq_) - f.seq;
-      for (; next_event < events.size() && events[next_event].seq <= f.seq; ++next_event)
-        publish_event(events[next_event], shift);
-      std::size_t sent = 0;
-      for (; sent < timed_pending.size() && timed_pending[sent].first <= f.seq; ++sent) {
-        proto::ControlMessage& m = timed_pending[sent].second;
-        std::visit([&](auto& msg) { msg.seq = next_seq_; }, m);
-        channel_->publish_control(proto::to_json(m));
-      }
-      timed_pending.erase(timed_pending.begin(), timed_pending.begin() + static_cast<std::ptrdiff_t>(sent));
-      std::size_t cued = 0;
-      for (; cued < cues.size() && cues[cued].seq <= f.seq; ++cued) {
-        proto::ControlMessage m{std::move(cues[cued])};
-        proto::shift_frames(m, shift);
-        channel_->publish_control(proto::to_json(m));
-      }
-      cues.erase(cues.begin(), cues.begin() + static_cast<std::ptrdiff_t>(cued));
-      f.seq = next_seq_++;
-      f.server_time_ms = unix_ms();
-      bool key = false;
-      std::string bytes = encoder.encode(f, key);
-      channel_->publish_frame(std::move(bytes), key);
-      ++frames_;
+      // Sequence numbers continue across loops so that clients see no gap.
+      pipeline.emit_next(unix_ms(), sink);
+      next_seq_ = pipeline.next_seq();
     }
-    batch.clear();
-    events.erase(events.begin(), events.begin() + static_cast<std::ptrdiff_t>(next_event));
-    next_event = 0;
     return true;
   };
 
@@ -258,7 +175,7 @@ bool LogFeed::play_once() {
         if (ev.kind == ingest::SourceEvent::Kind::FeedLost) announce_feed(true, ev.detail);
         if (ev.kind == ingest::SourceEvent::Kind::FeedBack) {
           announce_feed(false, ev.detail);
-          encoder.force_keyframe();  // spectators resync at once
+          pipeline.force_keyframe();  // spectators resync at once
         }
       }
       if (w == ingest::StateSource::Wait::State) return true;
@@ -267,38 +184,15 @@ bool LogFeed::play_once() {
   };
 
   do {
-    const std::uint64_t first_frame = 2 * state.index;  // the seq the animator gives its substep 0
-    // Metadata first, so that a spectator has the scoreboard before the
-    // picture: the teams (names; a team may connect late), the score (a
-    // goal, a penalty); the relay keeps the latest of each for joiners.
-    std::pair<std::string, std::string> names{state.left.name, state.right.name};
-    if (teams_sent != names) {
-      proto::TeamsUpdate t;
-      t.left = team_of(state.left, Side::Left);
-      t.right = team_of(state.right, Side::Right);
-      timed_pending.emplace_back(first_frame, std::move(t));
-      teams_sent = std::move(names);
-    }
-    const proto::ScoreUpdate score = score_of(state);
-    if (!score_sent || score.left != score_sent->left || score.right != score_sent->right ||
-        score.pen_left != score_sent->pen_left || score.pen_right != score_sent->pen_right) {
-      timed_pending.emplace_back(first_frame, score);
-      score_sent = score;
-    }
-    // Stamina once a second: with the pass's first state, then every 10th.
-    if ((state.index - first_index) % kStaminaEveryStates == 0)
-      timed_pending.emplace_back(first_frame, proto::stamina_update(state));
     if (reach) {
       proto::ReachMapUpdate m;
-      if (reach->push(state, source->params(), m)) timed_pending.emplace_back(first_frame, std::move(m));
+      if (reach->push(state, source->params(), m)) pipeline.add_state_message(std::move(m));
     }
-    director.push(state, cues);
-    animator.push(state, frames, &events);
-    if (!publish(frames)) return false;
+    pipeline.push(state);
+    if (!publish()) return false;
   } while (next_state());
-  director.finish(cues);
-  animator.finish(frames, &events);
-  if (!publish(frames)) return false;
+  pipeline.finish();
+  if (!publish()) return false;
 
   const auto& stats = source->stats();
   if (stats.skipped)

@@ -11,7 +11,10 @@
 // "stamina" every 20 frames, on the first frame of every 10th state.
 //
 // This is the glue of the pipeline ingest -> anim -> proto -> relay; each
-// stage stays ignorant of the others.
+// stage stays ignorant of the others. The ingest -> anim -> proto part is
+// BroadcastPipeline (broadcast_pipeline.hpp), the code the page's
+// WebAssembly module runs too: this feed only paces it, stamps real server
+// times and publishes.
 #pragma once
 
 #include <atomic>
@@ -68,8 +71,6 @@ class LogFeed {
   void run();
   // One pass over the log (or one live session); false when stopped.
   bool play_once();
-  // Publishes an animator event, renumbered by `shift` frames like the frames.
-  void publish_event(const anim::AnimEvent& event, std::int64_t shift);
   // Publishes a feed lost/back message and updates the channel's state.
   void announce_feed(bool lost, const std::string& detail);
   // Sleeps until `deadline` or stop(); false when stopped.
