@@ -22,6 +22,7 @@
 
 #include "proto/hello.hpp"
 #include "proto/pose_frame.hpp"
+#include "viewer/broadcast_track.hpp"
 
 namespace mc::viewer {
 
@@ -83,6 +84,8 @@ class FrameBuffer {
   std::uint64_t dropped() const;     // frames dropped because the buffer was full
   std::size_t size() const;
   std::uint64_t timeline() const;    // grows with each clear (seek, new stream)
+  // Stamina and director cues from the same stream (thread-safe itself).
+  BroadcastTrack& track() { return track_; }
 
  private:
   struct Entry {
@@ -96,6 +99,7 @@ class FrameBuffer {
   std::deque<Entry> frames_;
   StreamMeta meta_;
   std::uint64_t skips_ = 0, dropped_ = 0, timeline_ = 0, seen_timeline_ = ~0ull;
+  BroadcastTrack track_;
 };
 
 }  // namespace mc::viewer

@@ -15,6 +15,10 @@ void apply_control_message(std::string_view text, FrameBuffer& buffer) {
     buffer.set_penalties(score->pen_left, score->pen_right);
   } else if (auto* feed = std::get_if<proto::FeedStatus>(&message)) {
     buffer.set_status(feed->lost ? "feed lost: " + feed->detail : "");
+  } else if (auto* stamina = std::get_if<proto::StaminaUpdate>(&message)) {
+    buffer.track().set_stamina(*stamina);
+  } else if (auto* cue = std::get_if<proto::DirectorCue>(&message)) {
+    buffer.track().add_cue(*cue);
   }
 }
 

@@ -104,3 +104,79 @@ test('the body is generated from its description, the same as the viewer makes i
   assert.deepEqual(tonesOf(spec, 1, 9), tonesOf(spec, 1, 9));
   assert.ok(new Set(Array.from({ length: 11 }, (_, u) => tonesOf(spec, -1, u + 1).skin)).size >= 3);
 });
+
+const { tiredness, FatiguePose, HANDS_ON_KNEES_DROP } = await load('src/model/fatigue.js');
+
+// Forward kinematics of the skeleton (proto/skeleton.hpp): joint positions
+// in body space for `angles`, the pelvis `z` metres above the grass.
+function jointPositions(skel, angles, z) {
+  const rot = (axis, deg) => {
+    const a = deg * Math.PI / 180, c = Math.cos(a), s = Math.sin(a);
+    if (axis === 'x') return [[1, 0, 0], [0, c, -s], [0, s, c]];
+    if (axis === 'y') return [[c, 0, s], [0, 1, 0], [-s, 0, c]];
+    return [[c, -s, 0], [s, c, 0], [0, 0, 1]];
+  };
+  const mul = (A, B) => A.map((r) => [0, 1, 2].map((j) => r[0] * B[0][j] + r[1] * B[1][j] + r[2] * B[2][j]));
+  const app = (A, v) => A.map((r) => r[0] * v[0] + r[1] * v[1] + r[2] * v[2]);
+  const R = [], P = [];
+  skel.joints.forEach((j, i) => {
+    let local = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+    [...j.dofs].forEach((axis, k) => { local = mul(local, rot(axis, angles[j.angleIndex + k])); });
+    if (i === 0) { R.push(local); P.push([0, z, 0]); return; }
+    const o = app(R[j.parent], j.offset);
+    P.push(P[j.parent].map((v, k) => v + o[k]));
+    R.push(mul(R[j.parent], local));
+  });
+  return { R, P, at: (name, v) => { const i = skel.joints.findIndex((q) => q.name === name); const o = app(R[i], v); return P[i].map((x, k) => x + o[k]); } };
+}
+
+test('a tired player leans, swings his arms less, and rests his hands on his knees at a stoppage', () => {
+  const human = normalizeSkeleton(readJson('data/human_skeleton.json'));
+  assert.equal(tiredness(8000, 8000), 0);
+  assert.equal(tiredness(4400, 8000), 0, 'fresh enough above 55 %');
+  assert.equal(tiredness(1600, 8000), 1, 'exhausted at 20 %');
+  assert.ok(Math.abs(tiredness(3000, 8000) - 0.5) < 1e-9);
+  assert.equal(tiredness(NaN), 0, 'a stream without stamina: nothing changes');
+
+  const f = new FatiguePose(human);
+  const n = human.dofCount;
+  const idx = (name, axis) => { const j = human.joints.find((q) => q.name === name); return j.angleIndex + j.dofs.indexOf(axis); };
+  const running = () => { const a = new Float32Array(n); a[idx('r_upper_arm', 'z')] = 40; a[idx('l_upper_arm', 'z')] = -30; return a; };
+  // Running (moving 6 m/s), tired: the lean and the smaller swing.
+  const p = { x: 0, y: 0, state: 1 };
+  let a = running();
+  f.apply('1:4', p, a, 0.8, 0, {});
+  for (let t = 0; t < 10; t++) { p.x += 0.1; a = running(); f.apply('1:4', p, a, 0.8, 1 / 60, { stoppage: true, ball: { x: 30, y: 0 } }); }
+  assert.ok(a[idx('torso', 'z')] < -10, `leaning forward: ${a[idx('torso', 'z')]}`);
+  assert.ok(a[idx('r_upper_arm', 'z')] < 30 && a[idx('l_upper_arm', 'z')] > -20, 'arms swing less');
+  // Fresh: exactly the stream's angles.
+  const fresh = running();
+  assert.equal(new FatiguePose(human).apply('1:5', { x: 0, y: 0, state: 1 }, fresh, 0, 1 / 60, { stoppage: true }), 0);
+  assert.deepEqual([...fresh], [...running()]);
+  // Standing at a stoppage, exhausted, far from the ball: hands on knees within ~0.5 s.
+  const q = { x: 10, y: 5, state: 1 };
+  let drop = 0, frames = 0;
+  for (; frames < 60 && drop < HANDS_ON_KNEES_DROP - 1e-6; frames++) {
+    a = new Float32Array(n);
+    drop = f.apply('1:7', q, a, 1, 1 / 60, { stoppage: true, ball: { x: 40, y: 0 } });
+  }
+  assert.ok(frames >= 20 && frames <= 40, `eased in over ${frames} pictures`);
+  const fk = jointPositions(human, a, 1.0 - drop);
+  const knee = fk.at('r_shin', [0, 0, 0]);
+  const hand = fk.at('r_hand', [0, -0.09, 0]);
+  const dist = Math.hypot(...knee.map((v, k) => v - hand[k]));
+  assert.ok(dist < 0.1, `the right hand ${dist.toFixed(2)} m from the knee`);
+  const sole = fk.at('r_foot', [0, -0.08, 0]);
+  assert.ok(Math.abs(sole[1]) < 0.02, `the sole on the grass: ${sole[1].toFixed(3)} m`);
+  const head = fk.at('head', [0, 0.1, 0]);
+  assert.ok(head[1] < 1.45, `bent over: head at ${head[1].toFixed(2)} m`);
+  // Play on again: back up.
+  for (let t = 0; t < 40; t++) { a = new Float32Array(n); drop = f.apply('1:7', q, a, 1, 1 / 60, { stoppage: false }); }
+  assert.equal(drop, 0);
+  // Near the ball (the taker) or a goalie: no.
+  const g = new FatiguePose(human);
+  for (let t = 0; t < 60; t++) drop = g.apply('1:8', { x: 0, y: 0, state: 1 }, new Float32Array(n), 1, 1 / 60, { stoppage: true, ball: { x: 1, y: 1 } });
+  assert.equal(drop, 0);
+  for (let t = 0; t < 60; t++) drop = g.apply('1:1', { x: -50, y: 0, state: 9 }, new Float32Array(n), 1, 1 / 60, { stoppage: true, ball: { x: 1, y: 1 } });
+  assert.equal(drop, 0);
+});

@@ -351,7 +351,7 @@ function frameLoop(now) {
     view = blendFrames(s.a, s.b, s.t, view);
     events.step(s.passed, timeshift.active ? timeshift.pos : buffer.playhead,
       timeshift.active ? (timeshift.paused ? 0 : timeshift.speed * 1000 / buffer.frameMs) : buffer.rate);
-    players.update(view.players);
+    players.update(view.players, { stamina, staminaMax: match?.params?.stamina_max, playMode: view.playMode, ball: view.ball });
     ball.update(view.ball);
     const colors = { 1: players.kits[1].shirtColor, [-1]: players.kits[-1].shirtColor };
     overlays.update(view, colors);

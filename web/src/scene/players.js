@@ -12,6 +12,8 @@ import { findJoint, partOf } from '../model/skeleton.js';
 import { STATE } from '../model/playmodes.js';
 import { makeKit, numberTexture, contrastColor } from './kit.js';
 import { HeadSmoother } from '../model/neck.js';
+import { FatiguePose, tiredness } from '../model/fatigue.js';
+import { playModeName } from '../model/playmodes.js';
 import { BodyFactory } from './body_mesh.js';
 
 const DEG = Math.PI / 180;
@@ -61,6 +63,10 @@ export class Players {
     this.heads = new HeadSmoother(skel);
     // Smooth skinned bodies for the server's skeleton; boxes otherwise.
     this.bodies = BodyFactory.for(skel);
+    // Tired players lean, swing their arms less, rest their hands on their knees.
+    this.fatigue = new FatiguePose(skel);
+    // ?tired draws every player exhausted: to see the fatigue poses.
+    this.allTired = typeof location !== 'undefined' && new URLSearchParams(location.search).has('tired');
     this.lastUpdate = null;
 
     const ringGeo = new THREE.RingGeometry(0.55, 0.7, 40);
@@ -155,13 +161,15 @@ export class Players {
     return rig;
   }
 
-  // Applies one (interpolated) frame's players.
-  update(players) {
+  // Applies one (interpolated) frame's players. ctx (optional): { stamina:
+  // { 1: left[11], -1: right[11] }, staminaMax, playMode, ball } for fatigue.
+  update(players, ctx = {}) {
     const skel = this.skel;
     const seen = new Set();
     const now = performance.now();
     const dt = this.lastUpdate === null ? 0 : (now - this.lastUpdate) / 1000;
     this.lastUpdate = now;
+    const stoppage = ctx.playMode !== undefined && ctx.playMode !== null && playModeName(ctx.playMode) !== 'play_on';
     for (const p of players) {
       const rig = this._rig(p);
       seen.add(rig.key);
@@ -172,9 +180,14 @@ export class Players {
       // The chosen player has its ring and card instead of a label.
       rig.label.visible = visible && this.showLabels && rig.key !== this.selected;
       if (!visible) continue;
-      rig.root.position.set(p.x, p.z, p.y);
       rig.root.rotation.set(0, -p.heading * DEG, 0);
-      const angles = this.heads.apply(rig.key, p, dt);
+      const smooth = this.heads.apply(rig.key, p, dt);
+      if (!rig.drawn || rig.drawn.length !== smooth.length) rig.drawn = new Float32Array(smooth.length);
+      const angles = rig.drawn;
+      angles.set(smooth);
+      rig.tired = this.allTired ? 1 : tiredness(ctx.stamina?.[p.side]?.[p.unum - 1], ctx.staminaMax);
+      const drop = this.fatigue.apply(rig.key, p, angles, rig.tired, dt, { stoppage, ball: ctx.ball });
+      rig.root.position.set(p.x, p.z - drop, p.y);
       for (let i = 0; i < skel.joints.length; i++) {
         const j = skel.joints[i];
         localRotation(j.dofs, angles, j.angleIndex, rig.nodes[i].quaternion);
