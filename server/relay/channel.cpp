@@ -29,6 +29,7 @@ void Channel::set_hello(std::string json) {
   Audience a;
   {
     std::lock_guard lock(mutex_);
+    m.serial = ++published_;
     hello_ = m;
     // Frames coded against the old hello's skeleton are meaningless under the
     // new one: joiners wait for the next keyframe. The kept metadata was the
@@ -45,6 +46,7 @@ void Channel::publish_frame(std::string bytes, bool keyframe) {
   Audience a;
   {
     std::lock_guard lock(mutex_);
+    m.serial = ++published_;
     if (keyframe) gop_.clear();
     // Deltas with no keyframe before them cannot be decoded by a joiner.
     if (keyframe || !gop_.empty()) gop_.push_back(m);
@@ -60,6 +62,7 @@ void Channel::publish_control(std::string json) {
   Audience a;
   {
     std::lock_guard lock(mutex_);
+    m.serial = ++published_;
     if (slot >= 0) kept_[static_cast<std::size_t>(slot)] = m;
     a = audience_locked();
   }
@@ -67,37 +70,62 @@ void Channel::publish_control(std::string json) {
 }
 
 std::vector<Message> Channel::join(const std::shared_ptr<Subscriber>& s) {
-  std::lock_guard lock(mutex_);
+  std::shared_ptr<Group> group;
+  std::uint64_t after = 0;
   std::vector<Message> first;
-  first.reserve(gop_.size() + 1 + kept_.size());
-  if (hello_.bytes) first.push_back(hello_);
-  for (const Message& k : kept_)
-    if (k.bytes) first.push_back(k);
-  first.insert(first.end(), gop_.begin(), gop_.end());
-  if (auto* home = s->home()) {
-    auto it = std::find_if(groups_.begin(), groups_.end(), [home](const Group& g) { return g.home == home; });
-    if (it == groups_.end()) it = groups_.insert(groups_.end(), Group{home, std::make_shared<SubscriberList>()});
-    auto list = std::make_shared<SubscriberList>(*it->list);
-    list->push_back(s);
-    it->list = std::move(list);
-  } else {
-    subscribers_.push_back(s);
+  {
+    std::lock_guard lock(mutex_);
+    first.reserve(gop_.size() + 1 + kept_.size());
+    if (hello_.bytes) first.push_back(hello_);
+    for (const Message& k : kept_)
+      if (k.bytes) first.push_back(k);
+    first.insert(first.end(), gop_.begin(), gop_.end());
+    auto* home = s->home();
+    // A group's list is its thread's alone: a subscriber joining from
+    // elsewhere is served by posts instead.
+    if (home && home->get_executor().running_in_this_thread()) {
+      auto it = std::find_if(groups_.begin(), groups_.end(), [home](const auto& g) { return g->home == home; });
+      if (it == groups_.end()) it = groups_.insert(groups_.end(), std::make_shared<Group>(home));
+      group = *it;
+      after = published_;
+    } else {
+      subscribers_.push_back(s);
+    }
+  }
+  if (group) {
+    // On the group's thread, so no fan-out task is walking the list now. The
+    // Tap stays alive while listed: its session leaves before dropping it.
+    group->list.push_back({s, after});
+    ++group->count;
   }
   return first;
 }
 
 void Channel::leave(const Subscriber* s) {
-  std::lock_guard lock(mutex_);
-  std::erase_if(subscribers_, [s](const std::weak_ptr<Subscriber>& w) {
-    auto p = w.lock();
-    return !p || p.get() == s;
-  });
-  for (auto& g : groups_) {
-    auto it = std::find_if(g.list->begin(), g.list->end(), [s](const auto& p) { return p.get() == s; });
-    if (it == g.list->end()) continue;
-    auto list = std::make_shared<SubscriberList>(*g.list);
-    list->erase(list->begin() + (it - g.list->begin()));
-    g.list = std::move(list);
+  std::vector<std::shared_ptr<Group>> groups;
+  {
+    std::lock_guard lock(mutex_);
+    std::erase_if(subscribers_, [s](const std::weak_ptr<Subscriber>& w) {
+      auto p = w.lock();
+      return !p || p.get() == s;
+    });
+    groups = groups_;
+  }
+  for (auto& g : groups) {
+    if (!g->home->get_executor().running_in_this_thread()) continue;
+    auto it = std::find_if(g->list.begin(), g->list.end(),
+                           [s](const Entry& e) { return !e.gone && e.subscriber.get() == s; });
+    if (it == g->list.end()) continue;
+    --g->count;
+    if (g->walking) {
+      // A fan-out task is walking this list (the session left from inside
+      // a delivery): mark it, removed when the walk ends.
+      it->gone = true;
+      g->holes = true;
+    } else {
+      *it = std::move(g->list.back());
+      g->list.pop_back();
+    }
     break;
   }
 }
@@ -105,7 +133,7 @@ void Channel::leave(const Subscriber* s) {
 std::size_t Channel::subscribers() const {
   std::lock_guard lock(mutex_);
   std::size_t n = subscribers_.size();
-  for (const auto& g : groups_) n += g.list->size();
+  for (const auto& g : groups_) n += g->count.load();
   return n;
 }
 
@@ -119,15 +147,28 @@ const char* feed_state_name(FeedState s) {
   return "unknown";
 }
 
+template <class F>
+void Channel::for_each_at_home(const std::shared_ptr<Group>& g, F f) {
+  boost::asio::post(*g->home, [g, f] {
+    // Copied first: each call may end a session, which leaves the list.
+    std::vector<std::shared_ptr<Subscriber>> targets;
+    for (const Entry& e : g->list)
+      if (!e.gone) targets.push_back(e.subscriber);
+    for (const auto& t : targets) f(*t);
+  });
+}
+
 void Channel::shutdown_subscribers() {
   std::vector<std::shared_ptr<Subscriber>> targets;
+  std::vector<std::shared_ptr<Group>> groups;
   {
     std::lock_guard lock(mutex_);
     for (auto& w : subscribers_)
       if (auto p = w.lock()) targets.push_back(std::move(p));
-    for (const auto& g : groups_) targets.insert(targets.end(), g.list->begin(), g.list->end());
+    groups = groups_;
   }
   for (auto& t : targets) t->shutdown();
+  for (auto& g : groups) for_each_at_home(g, [](Subscriber& t) { t.shutdown(); });
 }
 
 void Channel::close_subscribers(std::uint16_t code, const std::string& reason) {
@@ -137,8 +178,7 @@ void Channel::close_subscribers(std::uint16_t code, const std::string& reason) {
     a = audience_locked();
   }
   for (auto& t : a.targets) t->close(code, reason);
-  for (const auto& g : a.groups)
-    for (const auto& s : *g.list) s->close(code, reason);
+  for (auto& g : a.groups) for_each_at_home(g, [code, reason](Subscriber& t) { t.close(code, reason); });
 }
 
 Channel::Audience Channel::audience_locked() {
@@ -153,9 +193,21 @@ Channel::Audience Channel::audience_locked() {
 void Channel::send(Audience& a, const Message& m) {
   // Home threads get one task per message for all their subscribers.
   for (auto& g : a.groups) {
-    if (g.list->empty()) continue;
-    boost::asio::post(*g.home, [list = std::move(g.list), m] {
-      for (const auto& s : *list) s->deliver_here(m);
+    if (g->count.load() == 0) continue;
+    boost::asio::post(*g->home, [g = std::move(g), m] {
+      g->walking = true;
+      // By index, re-reading the size: a delivery may add to the list.
+      for (std::size_t i = 0; i < g->list.size(); ++i) {
+        const Entry& e = g->list[i];
+        if (e.gone || m.serial <= e.after) continue;
+        Subscriber* target = e.subscriber.get();  // `e` may move if the list grows meanwhile
+        target->deliver_here(m);
+      }
+      g->walking = false;
+      if (g->holes) {
+        std::erase_if(g->list, [](const Entry& e) { return e.gone; });
+        g->holes = false;
+      }
     });
   }
   for (auto& t : a.targets) t->deliver(m);

@@ -35,10 +35,11 @@ class Subscriber {
   virtual void close(std::uint16_t /*code*/, const std::string& /*reason*/) { shutdown(); }
 
   // A subscriber that lives on one single-threaded io_context (a spectator's
-  // session) returns it. The channel then delivers to all the subscribers
-  // of that thread with one posted task per message, which calls
-  // deliver_here() on that thread: no post, lock or allocation per
-  // subscriber and frame. nullptr = deliver() from the publisher's thread.
+  // session) returns it, and joins and leaves on that thread. The channel
+  // then delivers to all the subscribers of that thread with one posted
+  // task per message, which calls deliver_here() on that thread: no post,
+  // lock or allocation per subscriber and frame. nullptr = deliver() from
+  // the publisher's thread.
   virtual boost::asio::io_context* home() { return nullptr; }
   virtual void deliver_here(const Message& m) { deliver(m); }
 };
@@ -93,6 +94,9 @@ class Channel {
   struct Audience;
   Audience audience_locked();
   static void send(Audience& a, const Message& m);
+  // Runs `f(subscriber)` for every subscriber of `g`, on g's thread.
+  template <class F>
+  static void for_each_at_home(const std::shared_ptr<Group>& g, F f);
 
   const std::string name_;
   mutable std::mutex mutex_;
@@ -101,18 +105,32 @@ class Channel {
   std::array<Message, std::size(kKeptControlTypes)> kept_;
   std::vector<Message> gop_;  // latest keyframe + deltas since
   std::vector<std::weak_ptr<Subscriber>> subscribers_;  // those without a home()
-  // Subscribers by home thread. Each list is copied on join and leave (rare)
-  // and shared, immutable, with the tasks in flight (per frame: one pointer).
-  using SubscriberList = std::vector<std::shared_ptr<Subscriber>>;
+  // Subscribers by home thread. A group's list is touched only on its own
+  // thread: by joins and leaves (a session's own thread) and by the fan-out
+  // tasks. So a join costs a push_back, not a copy of every other
+  // spectator's entry (which made a connect storm quadratic). Each message
+  // carries its publish number: a joiner skips what its catch-up already
+  // held, as a task posted before the join can run after it.
+  struct Entry {
+    // Kept alive while listed: a session destroyed without leaving (its
+    // thread stopped) leaves a Tap that delivers to nobody, never a dangling one.
+    std::shared_ptr<Subscriber> subscriber;
+    std::uint64_t after;   // deliver only messages published after this
+    bool gone = false;     // left while the list was being walked
+  };
   struct Group {
-    boost::asio::io_context* home;
-    std::shared_ptr<const SubscriberList> list;
+    explicit Group(boost::asio::io_context* h) : home(h) {}
+    boost::asio::io_context* const home;
+    std::vector<Entry> list;          // home thread only
+    bool walking = false, holes = false;  // home thread only
+    std::atomic<std::size_t> count{0};    // any thread (subscribers())
   };
   struct Audience {
     std::vector<std::shared_ptr<Subscriber>> targets;
-    std::vector<Group> groups;
+    std::vector<std::shared_ptr<Group>> groups;
   };
-  std::vector<Group> groups_;
+  std::vector<std::shared_ptr<Group>> groups_;  // grows, never shrinks
+  std::uint64_t published_ = 0;  // messages published so far (under mutex_)
   std::atomic<std::uint64_t> frames_published_{0};
   std::atomic<int> feed_state_{0};
 };

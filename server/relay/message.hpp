@@ -36,6 +36,8 @@ struct Message {
   std::chrono::steady_clock::time_point published{};
   // Header + payload: what goes on the wire as is.
   std::shared_ptr<const std::string> wire;
+  // Its number among its channel's published messages (0: none).
+  std::uint64_t serial = 0;
 
   bool binary() const { return kind == Kind::Keyframe || kind == Kind::Delta; }
   // Control messages (JSON) are never dropped; deltas may be, keyframes end a skip.
