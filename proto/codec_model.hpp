@@ -138,7 +138,7 @@ struct CodecModel {
     const std::int64_t m = v % kHeadingSteps;
     return static_cast<std::int32_t>(m < 0 ? m + kHeadingSteps : m);
   }
-  // Into [-200, 199].
+  // Into [-kHeadingSteps / 2, kHeadingSteps / 2 - 1] = [-182, 181].
   static std::int32_t wrap_signed(std::int64_t v) { return wrap(v + kHeadingSteps / 2) - kHeadingSteps / 2; }
 };
 

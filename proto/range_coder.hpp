@@ -1,5 +1,5 @@
 // Binary adaptive range coder for the pose-frame body (the LZMA "rc" design:
-// 11-bit probabilities, adaptation shift 5, 32-bit range, byte-wise carry).
+// 11-bit probabilities, adaptation shift 4, 32-bit range, byte-wise carry).
 // Integer-only, so the JavaScript decoder (web/lib/proto/decoder.js) follows
 // it bit for bit. SPEC.md section 4.2 is the normative description.
 //
@@ -19,7 +19,7 @@ namespace mc::proto {
 using Prob = std::uint16_t;
 inline constexpr int kProbBits = 11;
 inline constexpr Prob kProbInit = 1u << (kProbBits - 1);
-inline constexpr int kProbShift = 4;  // adaptation speed: ~32 symbols of memory
+inline constexpr int kProbShift = 4;  // adaptation speed: ~16 symbols of memory
 
 class RangeEncoder {
  public:
