@@ -14,6 +14,7 @@
 
 #include "viewer/hud.hpp"
 #include "viewer/interpolate.hpp"
+#include "viewer/log_source.hpp"
 #include "viewer/png.hpp"
 #include "viewer/recording_source.hpp"
 #include "viewer/renderer.hpp"
@@ -57,7 +58,7 @@ bool App::make_source(bool screenshot, std::string& error) {
       ro.start_time = options_.at;
       ro.start_paused = true;
     }
-    source_ = std::make_unique<RecordingSource>(options_.source, buffer_, ro);
+    source_ = make_file_source(options_.source, buffer_, ro);  // a recording or a game log
   } else {
     WsUrl url;
     if (!parse_ws_url(options_.source, url, error)) return false;
@@ -120,6 +121,9 @@ bool App::open_window(bool visible, std::string& error) {
   });
   glfwSetCursorPosCallback(window_, [](GLFWwindow* win, double x, double y) { app_of(win)->on_cursor(x, y); });
   glfwSetScrollCallback(window_, [](GLFWwindow* win, double, double dy) { app_of(win)->on_scroll(dy); });
+  glfwSetDropCallback(window_, [](GLFWwindow* win, int count, const char** paths) {
+    if (count > 0) app_of(win)->on_drop(paths[0]);
+  });
   renderer_ = std::make_unique<Renderer>();
   hud_ = std::make_unique<Hud>();
   return renderer_->init(error) && hud_->init(error);
@@ -141,7 +145,6 @@ void App::check_hello() {
   hello_generation_ = meta_.hello_generation;
   model_ = std::make_unique<PlayerModel>(meta_.hello->skeleton);
   heads_ = std::make_unique<HeadSmoother>(meta_.hello->skeleton);
-  fatigue_ = std::make_unique<FatiguePose>(meta_.hello->skeleton);
   renderer_->set_field(meta_.hello->field);
 }
 
@@ -253,9 +256,6 @@ int App::run_window() {
     if (model_ && buffer_.sample(playhead_, dt * meta_.hello->frame_rate * rate, *sample_)) {
       blend_frames(sample_->a, sample_->b, sample_->t, meta_.hello->skeleton.dof_count(), *frame_);
       heads_->apply(*frame_, dt);
-      const auto max = meta_.hello->server_params.find("stamina_max");
-      fatigue_->apply(*frame_, dt, buffer_.track().stamina(),
-                      max != meta_.hello->server_params.end() ? static_cast<float>(max->second) : 8000.0f);
       draw(*frame_, width, height, dt);
       ++drawn;
       skips += sample_->skipped;

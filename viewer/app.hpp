@@ -9,7 +9,6 @@
 
 #include "viewer/camera.hpp"
 #include "viewer/frame_buffer.hpp"
-#include "viewer/fatigue_pose.hpp"
 #include "viewer/head_smoother.hpp"
 #include "viewer/options.hpp"
 #include "viewer/player_model.hpp"
@@ -35,6 +34,9 @@ class App {
   void on_mouse_button(int button, int action);
   void on_cursor(double x, double y);
   void on_scroll(double dy);
+  // A file dropped onto the window (a game log or a recording) is opened
+  // in place of what is shown.
+  void on_drop(const std::string& path);
 
  private:
   bool open_window(bool visible, std::string& error);
@@ -60,7 +62,6 @@ class App {
   StreamMeta meta_;
   std::unique_ptr<PlayerModel> model_;
   std::unique_ptr<HeadSmoother> heads_;  // heads at human speed where drawn
-  std::unique_ptr<FatiguePose> fatigue_;  // tired players lean, hands on knees at stoppages
   std::uint64_t hello_generation_ = 0;
   int selected_ = -1;       // player slot (player_index), -1 = none chosen
   bool labels_ = true;

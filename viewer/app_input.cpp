@@ -3,6 +3,9 @@
 #include "viewer/app.hpp"
 
 #include <algorithm>
+#include <cstdio>
+
+#include "viewer/log_source.hpp"
 
 #include "viewer/gl_util.hpp"  // before GLFW: the GL prototypes
 #define GLFW_INCLUDE_NONE
@@ -69,6 +72,20 @@ void App::on_cursor(double x, double y) {
   camera_.orbit_drag(static_cast<float>(x - drag_x_), static_cast<float>(y - drag_y_));
   drag_x_ = x;
   drag_y_ = y;
+}
+
+void App::on_drop(const std::string& path) {
+  std::fprintf(stderr, "matchcast-viewer: opening %s (dropped onto the window)\n", path.c_str());
+  if (source_) source_->stop();
+  RecordingOptions ro;
+  ro.speed = options_.speed;
+  ro.loop = options_.loop;
+  buffer_.set_status("opening " + path);
+  source_ = make_file_source(path, buffer_, ro);
+  source_->start();
+  playhead_ = kPlayheadUnset;
+  const auto slash = path.find_last_of('/');
+  glfwSetWindowTitle(window_, ("Matchcast: " + path.substr(slash == std::string::npos ? 0 : slash + 1)).c_str());
 }
 
 void App::on_scroll(double dy) {

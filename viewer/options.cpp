@@ -31,7 +31,7 @@ std::optional<ViewerOptions> parse_options(int argc, char** argv, std::string& m
   po::options_description desc(
       "matchcast-viewer SOURCE [options]\n"
       "SOURCE: a relay (ws://HOST:PORT/ws, ws://HOST:PORT/ws?recording=NAME, http://HOST:PORT/)\n"
-      "        or a recording file (.mcrec)\n"
+      "        or a recording file (.mcrec) or a game log (.rcg, .rcg.gz: animated in-process)\n"
       "Keys: 1 broadcast, 2 orbit, 4 player view, 5 follow, 7 top-down, C next camera;\n"
       "      Tab/] next player, [ previous, Esc nearest the ball; N numbers on/off;\n"
       "      Space/P pause, Left/Right seek 10 s (Shift: 60 s), Up/Down speed; Q quit.\n"
@@ -102,10 +102,11 @@ std::optional<ViewerOptions> parse_options(int argc, char** argv, std::string& m
   }
   o.vsync = vm.count("no-vsync") == 0;
   o.labels = vm.count("no-labels") == 0;
-  // A file: it exists, or it is named like a recording; anything else is an address.
+  // A file: it exists, or it is named like a recording or a log; anything else is an address.
   std::error_code ec;
   o.is_file = o.source.find("://") == std::string::npos &&
-              (std::filesystem::is_regular_file(o.source, ec) || o.source.ends_with(".mcrec"));
+              (std::filesystem::is_regular_file(o.source, ec) || o.source.ends_with(".mcrec") ||
+               o.source.ends_with(".rcg") || o.source.ends_with(".rcg.gz"));
   return o;
 }
 

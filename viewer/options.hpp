@@ -1,7 +1,8 @@
 // The viewer's command line:
 //   matchcast-viewer SOURCE [options]
 // SOURCE is a relay (ws://HOST:PORT/ws, ?channel=NAME or ?recording=NAME,
-// or the page's http:// address) or a recording file (.mcrec).
+// or the page's http:// address), a recording file (.mcrec) or a game log
+// (.rcg, .rcg.gz, any version: the pipeline runs in-process).
 #pragma once
 
 #include <optional>
@@ -14,7 +15,7 @@ namespace mc::viewer {
 
 struct ViewerOptions {
   std::string source;               // URL or file
-  bool is_file = false;             // SOURCE is a recording file
+  bool is_file = false;             // SOURCE is a file: a recording or a game log
   int width = 1280, height = 720;   // window or screenshot size (px)
   CameraMode camera = CameraMode::Broadcast;
   std::string follow;               // "l10", "r1": the chosen player ("" = nearest the ball)
