@@ -145,6 +145,7 @@ void App::check_hello() {
   hello_generation_ = meta_.hello_generation;
   model_ = std::make_unique<PlayerModel>(meta_.hello->skeleton);
   heads_ = std::make_unique<HeadSmoother>(meta_.hello->skeleton);
+  fatigue_ = std::make_unique<FatiguePose>(meta_.hello->skeleton);
   renderer_->set_field(meta_.hello->field);
 }
 
@@ -256,6 +257,9 @@ int App::run_window() {
     if (model_ && buffer_.sample(playhead_, dt * meta_.hello->frame_rate * rate, *sample_)) {
       blend_frames(sample_->a, sample_->b, sample_->t, meta_.hello->skeleton.dof_count(), *frame_);
       heads_->apply(*frame_, dt);
+      const auto max = meta_.hello->server_params.find("stamina_max");
+      fatigue_->apply(*frame_, dt, buffer_.track().stamina(),
+                      max != meta_.hello->server_params.end() ? static_cast<float>(max->second) : 8000.0f);
       draw(*frame_, width, height, dt);
       ++drawn;
       skips += sample_->skipped;

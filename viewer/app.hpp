@@ -9,6 +9,7 @@
 
 #include "viewer/camera.hpp"
 #include "viewer/frame_buffer.hpp"
+#include "viewer/fatigue_pose.hpp"
 #include "viewer/head_smoother.hpp"
 #include "viewer/options.hpp"
 #include "viewer/player_model.hpp"
@@ -62,6 +63,7 @@ class App {
   StreamMeta meta_;
   std::unique_ptr<PlayerModel> model_;
   std::unique_ptr<HeadSmoother> heads_;  // heads at human speed where drawn
+  std::unique_ptr<FatiguePose> fatigue_;  // tired players lean, hands on knees at stoppages
   std::uint64_t hello_generation_ = 0;
   int selected_ = -1;       // player slot (player_index), -1 = none chosen
   bool labels_ = true;
