@@ -149,6 +149,9 @@ void WebSocketSession::run(std::string handshake_response, std::string_view earl
   // nothing is missed or doubled.
   queue_.push(Message::session_bytes(std::move(handshake_response)));
   switch_to(live_);
+  // The 101 goes out now even when the channel has nothing to send yet (a
+  // game a NATS edge is still waiting for): the catch-up did not flush.
+  if (!writing_ && !flush_pending_) schedule_flush();
   if (!early.empty() && !consume(early)) return;
   start_read();
 }
