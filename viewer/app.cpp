@@ -185,7 +185,17 @@ CameraTarget App::camera_target(const PoseFrame& f) {
 
 void App::draw(const PoseFrame& f, int width, int height, double dt) {
   const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
-  camera_.update(dt, camera_target(f), aspect, meta_.hello->field);
+  CameraTarget target = camera_target(f);
+  if (const proto::DirectorCue* cue = director_.current(); cue && camera_.mode() == CameraMode::Director) {
+    const ShotRig r = shot_rig(*cue, director_.angle(), f, meta_.hello->field, aspect);
+    target.has_shot = true;
+    target.shot_eye = r.eye;
+    target.shot_look = r.look;
+    target.shot_fov = r.fov;
+    target.shot_cut = director_cut_;
+  }
+  director_cut_ = false;
+  camera_.update(dt, target, aspect, meta_.hello->field);
   const int hidden = camera_.mode() == CameraMode::Player ? selected_ : -1;
   renderer_->draw(f, *meta_.hello, *model_, camera_, width, height, hidden, selected_);
 
@@ -205,6 +215,7 @@ void App::draw(const PoseFrame& f, int width, int height, double dt) {
   info.chosen = slot_name(selected_);
   if (source_->paused()) info.playback = "PAUSED";
   else if (source_->speed() != 1.0) info.playback = "x" + std::to_string(source_->speed()).substr(0, 4);
+  if (director_.replaying() && camera_.mode() == CameraMode::Director) info.playback = "REPLAY";
   info.status = meta_.status;
   if (labels_) {
     std::vector<glm::mat4> joints;
@@ -220,6 +231,18 @@ void App::draw(const PoseFrame& f, int width, int height, double dt) {
     }
   }
   hud_->draw(info, width, height);
+}
+
+void App::follow_director(double live_seq, double dt, double rate) {
+  if (buffer_.track().cues_added() != cues_seen_) {
+    cues_seen_ = buffer_.track().cues_added();
+    cues_ = buffer_.track().cues();
+  }
+  const DirectorView::Step step =
+      director_.update(live_seq, dt, cues_, camera_.mode() == CameraMode::Director, history_, rate);
+  if (step.cut) director_cut_ = true;
+  // A replay draws the history instead of the live picture.
+  if (step.replaying) history_.at(step.replay_seq, meta_.hello->skeleton.dof_count(), *frame_);
 }
 
 void App::draw_waiting(const std::string& status, int width, int height) {
@@ -256,6 +279,9 @@ int App::run_window() {
     const double rate = source_->paused() ? 0.0 : source_->speed();
     if (model_ && buffer_.sample(playhead_, dt * meta_.hello->frame_rate * rate, *sample_)) {
       blend_frames(sample_->a, sample_->b, sample_->t, meta_.hello->skeleton.dof_count(), *frame_);
+      history_.add(sample_->a);
+      history_.add(sample_->b);
+      follow_director(sample_->playhead, dt, rate);
       heads_->apply(*frame_, dt);
       const auto max = meta_.hello->server_params.find("stamina_max");
       fatigue_->apply(*frame_, dt, buffer_.track().stamina(),
@@ -314,6 +340,8 @@ int App::run_screenshot() {
   }
   check_hello();
   *frame_ = *found;
+  history_.add(*frame_);
+  follow_director(frame_->seq, 0.0, 1.0);
   target.bind();
   camera_.snap();
   draw(*frame_, options_.width, options_.height, 0.0);

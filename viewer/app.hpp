@@ -8,6 +8,7 @@
 #include <string>
 
 #include "viewer/camera.hpp"
+#include "viewer/director_view.hpp"
 #include "viewer/frame_buffer.hpp"
 #include "viewer/fatigue_pose.hpp"
 #include "viewer/head_smoother.hpp"
@@ -64,6 +65,13 @@ class App {
   std::unique_ptr<PlayerModel> model_;
   std::unique_ptr<HeadSmoother> heads_;  // heads at human speed where drawn
   std::unique_ptr<FatiguePose> fatigue_;  // tired players lean, hands on knees at stoppages
+  // The director (issue 20): its cues, the frames drawn (to replay a goal), the shot.
+  DirectorView director_;
+  FrameHistory history_;
+  std::vector<proto::DirectorCue> cues_;
+  std::uint64_t cues_seen_ = ~0ull;
+  bool director_cut_ = true;
+  void follow_director(double live_seq, double dt, double rate);
   std::uint64_t hello_generation_ = 0;
   int selected_ = -1;       // player slot (player_index), -1 = none chosen
   bool labels_ = true;

@@ -30,6 +30,7 @@ void App::cycle_player(int step) {
 void App::on_key(int key, int mods) {
   const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
   switch (key) {
+    case GLFW_KEY_0: camera_.set_mode(CameraMode::Director); break;  // back to the director's cut
     case GLFW_KEY_1: camera_.set_mode(CameraMode::Broadcast); break;
     case GLFW_KEY_2: camera_.set_mode(CameraMode::Orbit); break;
     case GLFW_KEY_4: camera_.set_mode(CameraMode::Player); break;

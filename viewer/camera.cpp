@@ -19,7 +19,8 @@ constexpr ModeName kModes[] = {{CameraMode::Broadcast, "broadcast", '1'},
                                {CameraMode::Orbit, "orbit", '2'},
                                {CameraMode::Player, "player", '4'},
                                {CameraMode::Follow, "follow", '5'},
-                               {CameraMode::Top, "top", '7'}};
+                               {CameraMode::Top, "top", '7'},
+                               {CameraMode::Director, "director", '0'}};
 
 }  // namespace
 
@@ -127,6 +128,17 @@ void Camera::update(double dt, const CameraTarget& target, float aspect,
       look_goal = p + dir * 5.0f;
       look_goal.y = 0.8f;
       fov_goal = 50.0f;
+      break;
+    }
+    case CameraMode::Director: {
+      if (!target.has_shot) {
+        overview();
+        break;
+      }
+      goal = target.shot_eye;
+      look_goal = target.shot_look;
+      fov_goal = target.shot_fov;
+      if (target.shot_cut) snap_ = true;
       break;
     }
     case CameraMode::Top: {

@@ -20,13 +20,14 @@
 
 namespace mc::viewer {
 
-enum class CameraMode { Broadcast, Orbit, Player, Follow, Top };
+enum class CameraMode { Broadcast, Orbit, Player, Follow, Top, Director };
 
 // Mode names as on the command line and in the web page ("broadcast",
-// "orbit", "player", "follow", "top"); false for another name.
+// "orbit", "player", "follow", "top", "director": the server's director
+// track, director_view.hpp); false for another name.
 bool camera_mode_from_name(std::string_view name, CameraMode& out);
 std::string_view camera_mode_name(CameraMode mode);
-// The web page's keys: 1 broadcast, 2 orbit, 4 player, 5 follow, 7 top.
+// The web page's keys: 0 director, 1 broadcast, 2 orbit, 4 player, 5 follow, 7 top.
 char camera_mode_key(CameraMode mode);
 
 // What the modes look at, in scene space.
@@ -37,6 +38,11 @@ struct CameraTarget {
   float player_heading = 0;      // field degrees
   glm::vec3 head{0.0f};          // his head joint and its forward (+X) axis
   glm::vec3 head_forward{1.0f, 0.0f, 0.0f};
+  // The director's shot (director mode): where to stand and look; `shot_cut`
+  // jumps there instead of moving.
+  bool has_shot = false, shot_cut = false;
+  glm::vec3 shot_eye{0.0f}, shot_look{0.0f};
+  float shot_fov = 40.0f;
 };
 
 class Camera {

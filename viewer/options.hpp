@@ -17,7 +17,7 @@ struct ViewerOptions {
   std::string source;               // URL or file
   bool is_file = false;             // SOURCE is a file: a recording or a game log
   int width = 1280, height = 720;   // window or screenshot size (px)
-  CameraMode camera = CameraMode::Broadcast;
+  CameraMode camera = CameraMode::Director;
   std::string follow;               // "l10", "r1": the chosen player ("" = nearest the ball)
   double speed = 1.0;               // recordings: playback speed
   bool loop = false;                // recordings: start again at the end
