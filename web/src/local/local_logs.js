@@ -128,8 +128,10 @@ export class LocalLogs {
     if (!this.state) return null;
     const pb = this.playback;
     const since = (t) => (t !== null && t !== undefined && t >= this.opened ? t - this.opened : null);
-    // Sampled: the first frame went to the renderer; shown: that picture is drawn.
-    return { ...this.state, firstSampledMs: since(pb?.firstSampled), firstShownMs: since(pb?.firstShown),
+    // Ready: the first keyframe is in the playback; sampled: it went to the
+    // renderer; shown: that picture is drawn.
+    return { ...this.state, firstReadyMs: since(pb?.ready), firstSampledMs: since(pb?.firstSampled),
+      firstShownMs: since(pb?.firstShown),
       complete: pb?.complete ?? false, kept: pb?.entries.length ?? 0 };
   }
 

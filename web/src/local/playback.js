@@ -18,6 +18,7 @@ export class LogPlayback extends TimeShift {
     this.timed = [];           // [seq, message] of moment messages, in seq order
     this.onMessage = null;     // (message) => void, as the playhead reaches it
     this.deliveredUpTo = -1;   // index in this.timed last handed out
+    this.ready = null;         // performance.now() when the first keyframe was kept: playable
     this.firstSampled = null;  // performance.now() when the first frame went to the renderer
     this.firstShown = null;    // ... and when the loop came back: that picture was drawn
   }
@@ -36,6 +37,7 @@ export class LogPlayback extends TimeShift {
     this.entries[this.entries.length - 1].time = header.time;   // for the clock on the bar
     if (!this.active && header.keyframe) {
       this.enter(header.seq, false);
+      this.ready ??= performance.now();
     }
   }
 
