@@ -4,7 +4,8 @@
 // WebGL to compile the players' shaders), at the log's positions,
 // and is wholly animated within 5 s, with no WebSocket opened (screenshot
 // local-log.png). Then a v3 binary log, a JSON log dropped onto the page, a
-// random file, a cut .rcg.gz and a 2 GB file: each plays or gets its message.
+// random file, a cut .rcg.gz, a log given as ?log=URL and a 2 GB file: each
+// plays or gets its message.
 //
 // Needs web/wasm/ (scripts/build-wasm.sh); without it the test is skipped
 // (exit 77, ctest's SKIP_RETURN_CODE). MATCHCAST_LOCAL_FIRST_MS and
@@ -246,5 +247,28 @@ describe('the page as a static site opens logs itself', { timeout: 600000 }, () 
     assert.equal((await settled(page, 'a log after the refusal')).phase, 'done');
     assert.equal(ws, 0);
     assert.deepEqual(errors, []);
+  });
+
+  test('?log=URL opens a log from the page\'s host, relative to the page', async () => {
+    // One page at a time: software WebGL on a busy machine is slow.
+    await page.close();
+    // The static server serves web/ only: the log's address is answered here.
+    const ctx = await browser.newContext({ viewport: { width: 800, height: 450 } });
+    const asked = [];
+    await ctx.route('**/games/**', (route) => {
+      asked.push(new URL(route.request().url()).pathname);
+      return route.fulfill({ status: 200, contentType: 'application/gzip', body: readFileSync(V3) });
+    });
+    const p = await ctx.newPage();
+    let sockets = 0;
+    p.on('websocket', () => sockets++);
+    await p.goto(`${server.url}?fixed-quality&log=games/final.rcg.gz`);
+    const l = await settled(p, 'the ?log= game', 90000);
+    assert.equal(l.phase, 'done', JSON.stringify(l));
+    assert.equal(l.name, 'final.rcg.gz');
+    assert.equal(l.status.states, 649);
+    assert.deepEqual(asked, ['/games/final.rcg.gz']);
+    assert.equal(sockets, 0);
+    await ctx.close();
   });
 });

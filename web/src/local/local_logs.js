@@ -42,7 +42,10 @@ export class LocalLogs {
   async takesOver(params) {
     const url = params.get('log');
     if (url) {
-      this.open({ url, name: decodeURIComponent(url.split('/').pop() || url) });
+      // Relative to the page (the worker would resolve it against its own script).
+      let abs = url;
+      try { abs = new URL(url, location.href).href; } catch { /* the worker says it cannot fetch it */ }
+      this.open({ url: abs, name: decodeURIComponent(url.split('/').pop() || url) });
       return true;
     }
     if (params.has('ws')) return false;   // an explicit relay elsewhere
