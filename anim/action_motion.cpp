@@ -92,7 +92,16 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
   }
   // Step-in: the root reaches towards the ball on the contact frame only, so
   // that it still lies on the 2D position at every cycle.
-  if (std::fabs(tau) < 0.02f) { s.root_dx = m.lunge_x; s.root_dy = m.lunge_y; }
+  if (std::fabs(tau) < 0.02f) {
+    s.root_dx = m.lunge_x;
+    s.root_dy = m.lunge_y;
+    s.contact = true;
+    s.kick_foot = k;
+    s.ball_x = m.ball_x;
+    s.ball_y = m.ball_y;
+    s.ball_h = m.ball_radius;
+    s.ball_r = m.ball_radius;
+  }
   const float near = 1.0f - smoothstep(std::fabs(tau) / 0.2f);
   s.pelvis_height = 0.95f + (m.pelvis_height - 0.95f) * near;
   // Upper body: lean over the ball, the arm opposite the kicking leg forward.

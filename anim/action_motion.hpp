@@ -23,6 +23,7 @@ struct ActionMotion {
   float ball_x = 0, ball_y = 0;  // field m: ball at contact
   float dir_x = 1, dir_y = 0;    // field unit vector: kick / tackle / dive direction
   float contact_x = 0, contact_y = 0, contact_h = 0;  // field: kicking ankle at contact (m)
+  float ball_radius = 0.085f;    // m
   float foot_yaw = 0;            // field deg: kicking sole's heading at contact
   float support_x = 0, support_y = 0;  // field m: support foot planted through contact
   float lunge_x = 0, lunge_y = 0;  // field m: root offset at the contact frame (step-in), 0 at cycles
@@ -50,6 +51,11 @@ struct ActionSample {
   // support foot is handed over only shortly before it plants).
   float foot_weight[2] = {0, 0};
   float root_dx = 0, root_dy = 0;  // field m
+  // Kick: this is the contact frame; the kicking foot's box must touch the
+  // ball, whose centre is (ball_x, ball_y, ball_h) (field m) and radius ball_r.
+  bool contact = false;
+  int kick_foot = 0;  // [0] right, [1] left
+  float ball_x = 0, ball_y = 0, ball_h = 0.085f, ball_r = 0.085f;
   float pelvis_height = 0.9f;
   // Angles blended over locomotion's with `weight`: all dofs (tackle, catch,
   // dive) or only the pelvis, torso and arms (kick).

@@ -236,7 +236,7 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
   const float ball_r = static_cast<float>(params_.ball_size());
   const DetailLevel detail = config_.detail;
   const bool loco_on = detail == DetailLevel::Run || detail == DetailLevel::Full;
-  LocomotionParams lp;
+  FootstepParams lp;
   lp.cadence_cap = config_.cadence_cap;
 
   std::array<Action, kMaxPlayers> act{};
@@ -333,6 +333,25 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       }
       if (sample.weight > 0) in.layer = &sample;
       in.source = config_.motion_source.get();
+      // The path ahead, frame by frame, as far as the look-ahead reaches and
+      // not across a teleport.
+      {
+        float lx = in.x, ly = in.y;
+        for (int m = 1; m <= kPathAhead; ++m) {
+          const int fr = sub + m;
+          const std::uint64_t c = pos + static_cast<std::uint64_t>(fr / 2);
+          const bool half = fr % 2 != 0;
+          if (c >= pushed_ || (half && c + 1 >= pushed_)) break;
+          const PlayerState& s0 = state_at(c).players[i];
+          const PlayerState& s1 = half ? state_at(c + 1).players[i] : s0;
+          if (!s0.active() || !s1.active()) break;
+          const float nx = lerpf(s0.x, s1.x, half ? 0.5f : 0.0f), ny = lerpf(s0.y, s1.y, half ? 0.5f : 0.0f);
+          if (pm::hypot(nx - lx, ny - ly) > 1.0f) break;
+          in.ahead_x[in.ahead_n] = lx = nx;
+          in.ahead_y[in.ahead_n] = ly = ny;
+          ++in.ahead_n;
+        }
+      }
       if (ctx.kick_event_pending && ctx.kick_event.seq == f.seq) {
         ctx.kick_event_pending = false;
         if (events != nullptr) events->push_back(ctx.kick_event);

@@ -44,9 +44,9 @@ struct BodyFrame {
   float c = 1, s = 0;      // cos/sin of heading
 
   BodyFrame() = default;
-  BodyFrame(float px, float py, float heading_deg)
-      : x(px), y(py), heading(heading_deg), c(pm::cos(heading_deg * kDeg)),
-        s(pm::sin(heading_deg * kDeg)) {}
+  BodyFrame(float px, float py, float heading_deg) : x(px), y(py), heading(heading_deg) {
+    pm::sincos(heading_deg * kDeg, s, c);
+  }
 
   // Field point (fx, fy) -> body (forward X, right Z).
   void to_body(float fx, float fy, float& bx, float& bz) const {

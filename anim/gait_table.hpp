@@ -9,7 +9,7 @@
 // touch-down, phase 0.5 the left foot's.
 //
 // The keyframes hold the rhythmic channels of the whole body at unit
-// amplitude; the feet themselves are placed on the grass by locomotion.hpp
+// amplitude; the feet themselves are placed on the grass by footsteps.hpp
 // from the same phase, so that a planted foot does not slide.
 #pragma once
 

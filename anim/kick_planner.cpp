@@ -31,6 +31,7 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   else { dx = body.c; dy = body.s; }  // a stopped ball: kick where the body faces
   m.dir_x = dx; m.dir_y = dy;
   m.ball_x = in.ball_x; m.ball_y = in.ball_y;
+  m.ball_radius = in.ball_radius;
   float bx, bz, dbx, dbz;
   body.to_body(in.ball_x, in.ball_y, bx, bz);
   body.dir_to_body(dx, dy, dbx, dbz);

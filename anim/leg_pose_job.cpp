@@ -70,6 +70,7 @@ bool LegPoseJob::Run() {
     const glm::vec3 right = joint_rotation(kZ, rz) * local[2];  // sole's +Z after undoing az
     const float ax = pm::atan2(-right.y, right.z) / kDeg;
     angles[ankle] = clampf(az, -60.0f, 35.0f);
+    ankle_pitch_deg[side] = az;
     angles[ankle + 1] = clampf(ax, -30.0f, 30.0f);
   }
   return true;

@@ -21,6 +21,9 @@ struct LegPoseJob {
   FootTarget feet[2];            // in: [0] right, [1] left
   std::span<float> angles;       // in/out: pelvis dofs read, leg dofs written (deg)
   bool reached[2] = {true, true};  // out: false when a target was clamped to reach
+  // out: the ankle pitch the wanted sole needs (deg, before the ankle's
+  // limits clamp it): above 35 the sole cannot lie as wanted.
+  float ankle_pitch_deg[2] = {0, 0};
 
   // False when `angles` is shorter than the human skeleton's dof count.
   bool Validate() const;

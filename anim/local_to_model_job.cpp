@@ -9,24 +9,23 @@ namespace {
 
 constexpr float kDegToRad = 0.017453292519943295f;
 
-// Elementary rotation about one body axis (column-major glm).
-glm::mat3 axis_rotation(char axis, float deg) {
-  const float r = deg * kDegToRad;
-  const float c = pm::cos(r), s = pm::sin(r);
-  glm::mat3 m(1.0f);
-  switch (axis) {
-    case 'x': m[1][1] = c; m[1][2] = s; m[2][1] = -s; m[2][2] = c; break;
-    case 'y': m[0][0] = c; m[0][2] = -s; m[2][0] = s; m[2][2] = c; break;
-    default: m[0][0] = c; m[0][1] = s; m[1][0] = -s; m[1][1] = c; break;
-  }
-  return m;
-}
-
 }  // namespace
 
 glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
+  // r * R_axis(angle), column by column: an elementary rotation mixes two
+  // columns of r and keeps the third.
   glm::mat3 r(1.0f);
-  for (std::size_t i = 0; i < dofs.size(); ++i) r = r * axis_rotation(dofs[i], deg[i]);
+  for (std::size_t i = 0; i < dofs.size(); ++i) {
+    const float a = deg[i] * kDegToRad;
+    float s = 0, c = 1;
+    pm::sincos(a, s, c);
+    int p = 0, q = 1;  // z: columns 0 and 1
+    if (dofs[i] == 'x') { p = 1; q = 2; }
+    else if (dofs[i] == 'y') { p = 2; q = 0; }
+    const glm::vec3 cp = r[p], cq = r[q];
+    r[p] = c * cp + s * cq;
+    r[q] = c * cq - s * cp;
+  }
   return r;
 }
 

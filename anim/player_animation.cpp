@@ -4,14 +4,176 @@
 #include <array>
 #include <cmath>
 
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
 #include "anim/body_frame.hpp"
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/leg_pose_job.hpp"
 #include "anim/local_to_model_job.hpp"
 #include "anim/mocap_walk_layer.hpp"
+#include "anim/portable_math.hpp"
 
 namespace mc::anim {
+namespace {
+
+const std::string kYzx = "yzx";
+// Hip -> ankle at which a leg keeps a soft knee (the IK softens from 99.5 %).
+constexpr float kLegReach = 0.985f * (dims::kThigh + dims::kShin);
+constexpr float kMinPelvis = 0.62f;
+// The pelvis rises at most this much per frame and sinks at most this much
+// unless a leg needs it lower (then it sinks as far as that leg needs).
+constexpr float kPelvisRise = 0.03f, kPelvisSink = 0.05f;
+// An ankle is kept this far inside its dorsiflexion limit by raising the heel.
+constexpr float kAnkleMargin = 3.0f;
+constexpr float kAnkleDorsiflexion = 35.0f;  // the ankles' limit (human_skeleton)
+
+// Highest pelvis at which the ankle of `t` (body space) stays within reach of
+// its hip, for a pelvis rotated by `pelvis` (pelvis joint on the body's Y axis).
+float pelvis_limit(const glm::mat3& pelvis, const FootTarget& t, int side) {
+  const glm::vec3 hip = pelvis * glm::vec3(0.0f, -dims::kHipDrop, side == 0 ? dims::kHipHalfWidth : -dims::kHipHalfWidth);
+  const float dx = t.ankle_ms[0] - hip.x, dz = t.ankle_ms[2] - hip.z;
+  const float h2 = kLegReach * kLegReach - dx * dx - dz * dz;
+  return t.ankle_ms[1] - hip.y + (h2 > 0.0025f ? std::sqrt(h2) : 0.05f);
+}
+
+// The body-space ankle target of a planted foot with its current roll.
+void planted_target(const FootState& f, const BodyFrame& body, FootTarget& t) {
+  float ax, ay, ah;
+  planted_ankle(f.x, f.y, f.yaw, f.pitch, ax, ay, ah);
+  body.to_body(ax, ay, t.ankle_ms[0], t.ankle_ms[2]);
+  t.ankle_ms[1] = ah;
+  t.yaw_deg = -delta_deg(f.yaw, body.heading);
+  t.pitch_deg = f.pitch;
+}
+
+// Rotation (deg) between two orientations of one joint.
+float rotation_between(const std::string& dofs, const float* a, const float* b) {
+  const glm::mat3 ra = joint_rotation(dofs, a), rb = joint_rotation(dofs, b);
+  float tr = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) tr += ra[i][k] * rb[i][k];
+  return pm::acos(clampf(0.5f * (tr - 1.0f), -1.0f, 1.0f)) / kDeg;
+}
+
+// Scales each joint's change since `last` down to at most its group's
+// limit per frame; `limited` gets the joints it held back. A joint whose
+// dofs moved by less than the limit in total cannot have rotated further
+// (each elementary rotation adds at most its own angle), so only the others
+// are measured.
+void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<float> a, bool limited[kHumanJointCount]) {
+  std::size_t k = 0;
+  for (std::size_t j = 0; j < skel.joints.size() && j < kHumanJointCount; ++j) {
+    const JointDef& jd = skel.joints[j];
+    const std::size_t n = jd.dofs.size();
+    const float cap = j >= kRThigh ? kMaxLegStepDeg : kMaxUpperStepDeg;
+    limited[j] = false;
+    float sum = 0;
+    for (std::size_t d = 0; d < n; ++d) sum += std::fabs(a[k + d] - last[k + d]);
+    if (sum > cap) {
+      for (int pass = 0; pass < 3; ++pass) {
+        const float ang = rotation_between(jd.dofs, last + k, &a[k]);
+        if (ang <= cap) break;
+        const float scale = (cap - 0.1f) / ang;
+        for (std::size_t d = 0; d < n; ++d) a[k + d] = last[k + d] + (a[k + d] - last[k + d]) * scale;
+        limited[j] = true;
+      }
+    }
+    k += n;
+  }
+}
+
+// Signed distance (m) from a point to a box given in the foot's local space.
+float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards) {
+  const glm::vec3 c(seg.center[0], seg.center[1], seg.center[2]);
+  const glm::vec3 h(0.5f * seg.size[0], 0.5f * seg.size[1], 0.5f * seg.size[2]);
+  const glm::vec3 d = p - c;
+  const glm::vec3 q = glm::abs(d) - h;
+  const glm::vec3 out = glm::max(q, glm::vec3(0.0f));
+  const float outside = std::sqrt(glm::dot(out, out));
+  const float inside = std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f);
+  if (towards != nullptr) {
+    // From the box's nearest surface point towards p.
+    glm::vec3 n(0.0f);
+    if (outside > 1e-6f) {
+      for (int i = 0; i < 3; ++i) n[i] = q[i] > 0 ? (d[i] > 0 ? q[i] : -q[i]) : 0.0f;
+      n /= outside;
+    } else {
+      const int i = q.x >= q.y && q.x >= q.z ? 0 : q.y >= q.z ? 1 : 2;
+      n[i] = d[i] >= 0 ? 1.0f : -1.0f;
+    }
+    *towards = n;
+  }
+  return outside + inside;
+}
+
+// Moves kicking foot `k` so that its box lies kContactGap off the ball:
+// up to three corrections of the ankle target along the contact normal,
+// each solved again by LegPoseJob. `body` places the ball; `a` holds the pose.
+void touch_ball(const SkeletonDef& skel, const BodyFrame& body, float& pelvis_h, const ActionSample& act, int k,
+                LegPoseJob& legs, std::span<float> a) {
+  constexpr float kContactGap = 0.004f;
+  const int foot = k == 0 ? kRFoot : kLFoot;
+  const Segment& seg = skel.joints[static_cast<std::size_t>(foot)].segment;
+  glm::vec3 ball(0.0f, act.ball_h, 0.0f);
+  body.to_body(act.ball_x, act.ball_y, ball.x, ball.z);
+  bool can_sink = true;
+  std::array<glm::mat4, kHumanJointCount> m;
+  // The other leg keeps its pose unless the pelvis sinks.
+  const int other_dof = k == 0 ? dof::kLHip : dof::kRHip;
+  float other[6];
+  for (int d = 0; d < 6; ++d) other[d] = a[static_cast<std::size_t>(other_dof + d)];
+  const float start_pelvis = legs.pelvis_height;
+  auto solve = [&] {
+    legs.Run();
+    if (legs.pelvis_height == start_pelvis)
+      for (int d = 0; d < 6; ++d) a[static_cast<std::size_t>(other_dof + d)] = other[d];
+    clamp_to_limits(skel, a);
+  };
+  for (int it = 0; it < 6; ++it) {
+    LocalToModelJob fk{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0, legs.pelvis_height, 0), m};
+    fk.joint_mask = kLegJoints;
+    if (!fk.Run()) return;
+    const glm::mat4& fm = m[static_cast<std::size_t>(foot)];
+    const glm::mat3 rot(fm);
+    const glm::vec3 local = glm::transpose(rot) * (ball - glm::vec3(fm[3]));
+    glm::vec3 n_local;
+    const float gap = box_distance(seg, local, &n_local) - act.ball_r;
+    if (std::fabs(gap - kContactGap) < 0.001f) break;
+    const glm::vec3 move = rot * n_local * (gap - kContactGap);  // towards the ball when too far
+    for (int c = 0; c < 3; ++c) legs.feet[k].ankle_ms[c] += move[c];
+    legs.feet[k].ankle_ms[1] = std::max(legs.feet[k].ankle_ms[1], min_ankle_height(legs.feet[k].pitch_deg));
+    // Out of the leg's reach: the pelvis sinks and turns the kicking hip
+    // towards the ball (a lunge), a little at a time.
+    // Out of the leg's reach: the pelvis sinks (a lunge), a little at a
+    // time, as long as no foot goes into the grass.
+    const float before = legs.pelvis_height;
+    if (!legs.reached[k] && it > 0 && can_sink) legs.pelvis_height = std::max(legs.pelvis_height - 0.04f, 0.6f);
+    solve();
+    if (legs.pelvis_height != before) {
+      LocalToModelJob fk2{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0, legs.pelvis_height, 0), m};
+      fk2.joint_mask = kLegJoints;
+      if (fk2.Run() && lowest_point_ms(skel, m, kFeetJoints) < -0.005f) {
+        legs.pelvis_height = before;
+        can_sink = false;
+        solve();
+      }
+    }
+  }
+  pelvis_h = legs.pelvis_height;
+  // Whatever the leg could not reach, the foot stays out of the grass.
+  LocalToModelJob fk{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0, pelvis_h, 0), m};
+  fk.joint_mask = kLegJoints;
+  for (int it = 0; it < 3 && fk.Run(); ++it) {
+    const float low = level_foot(skel, m, a, foot, k == 0 ? dof::kRAnkle : dof::kLAnkle);
+    if (low >= -0.002f) break;
+    legs.feet[k].ankle_ms[1] -= low;
+    solve();
+  }
+}
+
+}  // namespace
 
 int clamp_to_limits(const SkeletonDef& skeleton, std::span<float> angles) {
   int out = 0;
@@ -26,7 +188,7 @@ int clamp_to_limits(const SkeletonDef& skeleton, std::span<float> angles) {
   return out;
 }
 
-void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const LocomotionParams& lp,
+void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepParams& fp,
                     const SkeletonDef& limits_from, PlayerPose& out, bool* planted) {
   const bool rest = !in.animate_locomotion || in.action == Action::Stand ||
                     in.action == Action::Turn || in.action == Action::Disconnected;
@@ -36,14 +198,24 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
     heading = wrap_deg(ctx.heading + clampf(0.5f * delta_deg(in.heading, ctx.heading), -kMaxTurnPerFrameDeg,
                                             kMaxTurnPerFrameDeg));
   ctx.heading = heading;
-  LocomotionInput li;
-  li.x = in.x; li.y = in.y; li.heading = heading; li.dt = in.dt;
-  li.move_dx = in.move_dx; li.move_dy = in.move_dy;
-  li.rest = rest;
-  li.stamina = in.stamina;
-  li.reset = in.reset || !in.animate_locomotion;
-  LocomotionOutput lo;
-  step_locomotion(ctx.loco, li, lp, lo);
+  const ActionSample* act = in.layer;
+  const float w = act != nullptr ? act->weight : 0.0f;
+  // Feet an action has taken whole are the action's this frame.
+  for (int i = 0; i < 2; ++i)
+    ctx.loco.feet[i].held = act != nullptr && w > 0 && act->feet && act->foot_weight[i] > 0.99f;
+
+  FootstepInput fi;
+  fi.x = in.x; fi.y = in.y; fi.heading = heading; fi.dt = in.dt;
+  for (int k = 0; k < in.ahead_n && k < kPathAhead; ++k) {
+    fi.ahead_x[k] = in.ahead_x[k];
+    fi.ahead_y[k] = in.ahead_y[k];
+  }
+  fi.ahead_n = std::min(in.ahead_n, kPathAhead);
+  fi.rest = rest;
+  fi.stamina = in.stamina;
+  fi.reset = in.reset || !in.animate_locomotion;
+  FootstepOutput lo;
+  step_footsteps(ctx.loco, fi, fp, lo);
   if (!in.animate_locomotion) lo.planted[0] = lo.planted[1] = false;  // gliding: no foot is held
   ctx.action = in.action;
 
@@ -66,16 +238,19 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   // Arms swing against the legs; elbows bend more as the player runs.
   const float swing = (12.0f + 38.0f * run) * amp;
   a[dof::kRShoulder + 0] = g.r_arm * swing - 2.0f * lean;
-  a[dof::kRShoulder + 1] = -8.0f - 6.0f * run;
+  // Held a little away from the body: a hand swinging back passes outside
+  // the thigh swinging forward.
+  a[dof::kRShoulder + 1] = -13.0f - 7.0f * run;
   a[dof::kRElbow] = 12.0f + 75.0f * run * amp;
   a[dof::kLShoulder + 0] = g.l_arm * swing - 2.0f * lean;
-  a[dof::kLShoulder + 1] = 8.0f + 6.0f * run;
+  a[dof::kLShoulder + 1] = 13.0f + 7.0f * run;
   a[dof::kLElbow] = 12.0f + 75.0f * run * amp;
 
-  // Head: the server's gaze (body + neck). The head turns by the neck angle
-  // exactly, plus the lag of the smoothed heading behind the server's body
-  // (up to 60 deg, so that a pirouette cannot wrap the head round); the
-  // pelvis, torso and neck share the yaw.
+  // Head: the server's gaze (body + neck). The head turns by the neck angle,
+  // plus the lag of the smoothed heading behind the server's body (up to 60
+  // deg, so that a pirouette cannot wrap the head round); the pelvis, torso
+  // and neck share the yaw. The joint speed limit below lets it follow at
+  // a human head's speed.
   const float lag = clampf(delta_deg(in.body, heading), -60.0f, 60.0f);
   const float head_yaw = -(in.neck + lag) - a[dof::kPelvis] - a[dof::kTorso];
   a[dof::kNeck + 0] = clampf(0.4f * head_yaw, -80.0f, 80.0f);
@@ -86,8 +261,6 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
   float px = in.x, py = in.y, pelvis_h = lo.pelvis_height;
   FootTarget feet[2] = {lo.feet[0], lo.feet[1]};
   if (in.source != nullptr) mocap_walk(ctx, in, heading, a, pelvis_h, feet, lo.planted);
-  const ActionSample* act = in.layer;
-  const float w = act != nullptr ? act->weight : 0.0f;
   if (act != nullptr && w > 0) {
     px += act->root_dx;
     py += act->root_dy;
@@ -98,12 +271,12 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
       a[static_cast<std::size_t>(d)] += (act->angles[static_cast<std::size_t>(d)] - a[static_cast<std::size_t>(d)]) * w;
     }
   }
+  const BodyFrame body(px, py, heading);
   if (act != nullptr && w > 0 && act->feet) {
-    // The kick places both feet in field space; blend from locomotion's.
-    const BodyFrame body(px, py, heading);
-    bool take[2] = {false, false};
+    // The kick places both feet in field space; blend from the footsteps'.
     for (int i = 0; i < 2; ++i) {
       const float fw = act->foot_weight[i];
+      if (fw <= 0) continue;
       float bx, bz;
       body.to_body(act->foot_x[i], act->foot_y[i], bx, bz);
       FootTarget& f = feet[i];
@@ -112,60 +285,85 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
       f.ankle_ms[2] += (bz - f.ankle_ms[2]) * fw;
       f.yaw_deg += (-delta_deg(act->foot_yaw[i], heading) - f.yaw_deg) * fw;
       f.pitch_deg += (act->foot_pitch[i] - f.pitch_deg) * fw;
-      // A foot fully in the kick is the kick's (and locomotion resumes from
-      // it); while blending in it is held only if both say so.
-      take[i] = fw > 0.99f;
-      lo.planted[i] = take[i] ? act->planted[i] : (fw > 0.01f ? lo.planted[i] && act->planted[i] : lo.planted[i]);
-    }
-    if (take[0] || take[1]) {
-      const float yaw[2] = {act->foot_yaw[0], act->foot_yaw[1]};
-      take_over_feet(ctx.loco, act->foot_x, act->foot_y, yaw, act->planted, take);
-      if (w > 0.99f) ctx.loco.pelvis_height = pelvis_h;
+      // A foot fully in the kick is the kick's (and the footsteps resume
+      // from it); while blending in it is held only if both say so.
+      const bool take = fw > 0.99f;
+      lo.planted[i] = take ? act->planted[i] : lo.planted[i] && act->planted[i];
+      if (take) {
+        const float yaw = act->foot_yaw[i];
+        if (act->planted[i]) {
+          const float ux = pm::cos(yaw * kDeg), uy = pm::sin(yaw * kDeg);
+          take_over_foot(ctx.loco, i, act->foot_x[i] + ux * 0.06f, act->foot_y[i] + uy * 0.06f, 0, yaw, 0, true);
+        } else {
+          take_over_foot(ctx.loco, i, act->foot_x[i], act->foot_y[i], act->foot_h[i], yaw, act->foot_pitch[i], false);
+        }
+      }
     }
   } else if (act != nullptr && w > 0.5f) {
     lo.planted[0] = lo.planted[1] = false;  // tackles, catches, dives: feet are not held
   }
   // A pitched sole rolls over its heel or toes rather than sink into the grass.
   for (FootTarget& f : feet) f.ankle_ms[1] = std::max(f.ankle_ms[1], min_ankle_height(f.pitch_deg));
+
+  // The pelvis as low as the planted legs need: first a heel rises (a foot
+  // behind the hip pushes off from its toes), then the pelvis sinks.
+  const glm::mat3 pelvis_rot = joint_rotation(kYzx, &a[dof::kPelvis]);
+  const bool own_feet = in.animate_locomotion && (act == nullptr || w <= 0 || act->feet);
+  float limit = pelvis_h;
+  for (int i = 0; i < 2 && own_feet; ++i) {
+    FootState& f = ctx.loco.feet[i];
+    if (!lo.planted[i] || !f.planted || f.held) continue;
+    float lim = pelvis_limit(pelvis_rot, feet[i], i);
+    for (int k = 0; k < 5 && lim < pelvis_h - 0.02f && f.pitch > -40.0f && feet[i].ankle_ms[0] < -0.05f; ++k) {
+      f.pitch = std::max(-40.0f, std::min(f.pitch, 0.0f) - 8.0f);
+      planted_target(f, body, feet[i]);
+      lim = pelvis_limit(pelvis_rot, feet[i], i);
+    }
+    limit = std::min(limit, lim);
+  }
+  pelvis_h = std::min(pelvis_h, limit);
+  if (own_feet) {  // a whole-body action (tackle, dive) sets its own height and rests on the grass
+    if (!in.reset) pelvis_h = std::min(clampf(pelvis_h, ctx.pelvis_height - kPelvisSink, ctx.pelvis_height + kPelvisRise), limit);
+    pelvis_h = std::max(pelvis_h, kMinPelvis);
+  }
+
   LegPoseJob legs;
   legs.pelvis_height = pelvis_h;
   legs.feet[0] = feet[0];
   legs.feet[1] = feet[1];
   legs.angles = a;
   legs.Run();
+  // An ankle that cannot bend as far as a flat planted sole needs: the heel rises.
+  bool again = false;
+  for (int i = 0; i < 2 && own_feet; ++i) {
+    FootState& f = ctx.loco.feet[i];
+    const float excess = legs.ankle_pitch_deg[i] - (kAnkleDorsiflexion - kAnkleMargin);
+    if (!lo.planted[i] || !f.planted || f.held || excess <= 0) continue;
+    f.pitch = std::max(-45.0f, std::min(f.pitch, 0.0f) - excess);
+    planted_target(f, body, legs.feet[i]);
+    again = true;
+  }
+  if (again) legs.Run();
+  // An ankle never rests against its limits: a joint held at its stop looks
+  // locked (issue 23). In the air the sole only tilts a little further.
+  for (int i = 0; i < 2; ++i) {
+    const auto k = static_cast<std::size_t>(i == 0 ? dof::kRAnkle : dof::kLAnkle);
+    a[k] = clampf(a[k], -58.0f, kAnkleDorsiflexion - 2.0f);
+    a[k + 1] = clampf(a[k + 1], -28.0f, 28.0f);
+  }
   if (act != nullptr && act->whole_body && w > 0) {  // the action's own leg pose over the IK legs
     for (int d = dof::kRHip; d < dof::kCount; ++d) {
       const auto k = static_cast<std::size_t>(d);
       a[k] += (act->angles[k] - a[k]) * w;
     }
   }
-  // Joint speed limit, except on teleports and in actions (whose motions are
-  // fast on purpose) and for the neck and head yaw (which follow the server's
-  // neck angle, turned up to 180 deg per cycle).
-  const bool free = in.reset || w > 0 || ctx.was_in_action;
-  // Where the limit holds a planted leg back, that foot lets go of the
-  // grass (it is lifted from where the limit left it) rather than slide.
-  bool released[2] = {false, false};
-  for (int d = 0; d < dof::kCount && !free; ++d) {
-    if (d == dof::kNeck || d == dof::kHead) continue;
-    const auto k = static_cast<std::size_t>(d);
-    const float limited = ctx.last_angles[k] + clampf(a[k] - ctx.last_angles[k], -kMaxJointStepDeg, kMaxJointStepDeg);
-    if (std::fabs(limited - a[k]) > 0.01f && d >= dof::kRHip) released[d >= dof::kLHip ? 1 : 0] = true;
-    a[k] = limited;
-  }
-  ctx.was_in_action = w > 0;
-  // A walk foot the speed limit holds back stays held: the leg catches up
-  // within a frame or two (the capture's knee straightens fast at heel strike).
-  for (int i = 0; i < 2; ++i)
-    if (ctx.walk_planted[i] && ctx.walk_w > 0.99f) released[i] = false;
-  clamp_to_limits(limits_from, a);
   // Nothing goes under the grass: a sole that the joint limits or the speed
   // limit left pitched into it turns level at the ankle, and what is still
   // under (a whole-body action's pose, given as angles, or a leg the speed
-  // limit held short) lifts the body: it rests on the grass.
-  {
-    // Outside whole-body actions only the feet can reach the grass: the
-    // legs alone are posed (a third of the work).
+  // limit held short) lifts the body: it rests on the grass. Once before a
+  // kick's contact is made (so it is made where the body is) and once after
+  // the joint speed limit.
+  auto rest_on_grass = [&] {
     const bool whole = act != nullptr && act->whole_body && w > 0;
     std::array<glm::mat4, kHumanJointCount> m;
     LocalToModelJob fk{&limits_from, std::span<const float>(a.data(), a.size()), glm::vec3(0, pelvis_h, 0), m};
@@ -173,39 +371,39 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const Locomotio
     if (fk.Run()) {
       for (const auto& [joint, d] : {std::pair{kRFoot, dof::kRAnkle}, std::pair{kLFoot, dof::kLAnkle}}) {
         const float last = ctx.last_angles[static_cast<std::size_t>(d)];
-        level_foot(limits_from, m, a, joint, d, free ? -INFINITY : last - kMaxJointStepDeg,
-                   free ? INFINITY : last + kMaxJointStepDeg);
+        level_foot(limits_from, m, a, joint, d, in.reset ? -INFINITY : last - kMaxLegStepDeg,
+                   in.reset ? INFINITY : last + kMaxLegStepDeg);
       }
       pelvis_h += std::max(0.0f, -lowest_point_ms(limits_from, m, whole ? kAllJoints : kFeetJoints));
     }
+  };
+  clamp_to_limits(limits_from, a);
+  const bool contact = act != nullptr && act->contact && act->feet && act->foot_weight[act->kick_foot] > 0;
+  rest_on_grass();
+  // A kick's contact: the kicking foot's box touches the ball (a few mm
+  // off its surface, the margin of the stream's quantization), whatever the
+  // leg's reach, the ankle's limits and the grass made of the planned spot.
+  if (contact) {
+    legs.pelvis_height = pelvis_h;
+    for (int i = 0; i < 2; ++i) legs.feet[i] = feet[i];
+    touch_ball(limits_from, body, pelvis_h, *act, act->kick_foot, legs, a);
   }
-  // A foot touching down where the speed limit let it reach (not quite its
-  // target) is held there, so that its stance does not start with a slide;
-  // a released foot swings off from where it is.
-  if (!free && (lo.planted[0] || lo.planted[1])) {
-    std::array<glm::mat4, kHumanJointCount> m;
-    LocalToModelJob fk{&limits_from, std::span<const float>(a.data(), a.size()), glm::vec3(0, pelvis_h, 0), m};
-    if (fk.Run()) {
-      const BodyFrame body(px, py, heading);
-      const int foot_joint[2] = {kRFoot, kLFoot};
-      for (int i = 0; i < 2; ++i) {
-        if (!lo.planted[i]) continue;
-        const bool landing = !ctx.last_planted[i];
-        if (!landing && !released[i]) continue;
-        const glm::vec4& ankle = m[static_cast<std::size_t>(foot_joint[i])][3];
-        FootState& f = ctx.loco.feet[i];
-        body.to_field(ankle.x, ankle.z, f.x, f.y);
-        if (released[i] && !landing) {
-          f.release = true;
-          lo.planted[i] = false;
-        }
-      }
+  // Joint speed limit (not across a teleport). Where it holds a planted leg
+  // back, that foot lets go of the grass next frame rather than slide.
+  bool limited[kHumanJointCount] = {};
+  if (!in.reset) {
+    limit_joint_speed(limits_from, ctx.last_angles.data(), a, limited);
+    for (int i = 0; i < 2; ++i) {
+      const int j0 = i == 0 ? kRThigh : kLThigh;
+      if (lo.planted[i] && (limited[j0] || limited[j0 + 1] || limited[j0 + 2])) ctx.loco.feet[i].release = true;
     }
   }
+  rest_on_grass();
   for (int i = 0; i < 2; ++i)  // every touch-down counts for the mocap walk's cadence guard
     if (lo.planted[i] && !ctx.last_planted[i]) ctx.walk_since_land[i] = 0;
   ctx.last_planted[0] = lo.planted[0];
   ctx.last_planted[1] = lo.planted[1];
+  ctx.pelvis_height = pelvis_h;
   for (int d = 0; d < dof::kCount; ++d) ctx.last_angles[static_cast<std::size_t>(d)] = a[static_cast<std::size_t>(d)];
   if (planted != nullptr) { planted[0] = lo.planted[0]; planted[1] = lo.planted[1]; }
 

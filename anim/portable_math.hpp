@@ -123,6 +123,24 @@ inline double cos(double x) {
   }
 }
 
+// sin(x) and cos(x), bit for bit, with one argument reduction.
+inline void sincos(double x, double& s, double& c) {
+  if (!std::isfinite(x)) {
+    s = c = x - x;
+    return;
+  }
+  int q = 0;
+  const double r = detail::reduce(x, q);
+  const double ks = detail::kernel_sin(r), kc = detail::kernel_cos(r);
+  switch (q) {
+    case 0: s = ks; c = kc; break;
+    case 1: s = kc; c = -ks; break;
+    case 2: s = -ks; c = -kc; break;
+    default: s = -kc; c = ks; break;
+  }
+  if (x == 0) s = x;  // keeps the sign of zero, as sin() does
+}
+
 inline double atan(double x) { return x < 0 ? -detail::atan_pos(-x) : detail::atan_pos(x); }
 
 // The angle of (x, y) in (-pi, pi], signs of zeros as in C's atan2.
@@ -173,6 +191,12 @@ inline double exp2(double x) {
 // Float arguments: computed in double, rounded once.
 inline float sin(float x) { return static_cast<float>(sin(static_cast<double>(x))); }
 inline float cos(float x) { return static_cast<float>(cos(static_cast<double>(x))); }
+inline void sincos(float x, float& s, float& c) {
+  double ds = 0, dc = 0;
+  sincos(static_cast<double>(x), ds, dc);
+  s = static_cast<float>(ds);
+  c = static_cast<float>(dc);
+}
 inline float atan2(float y, float x) {
   return static_cast<float>(atan2(static_cast<double>(y), static_cast<double>(x)));
 }

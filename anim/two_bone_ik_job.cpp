@@ -37,11 +37,15 @@ bool TwoBoneIKJob::Run() const {
   const float cos_k = std::clamp((d * d - l1 * l1 - l2 * l2) / (2 * l1 * l2), -1.0f, 1.0f);
   const float k = hinge_sign * pm::acos(cos_k);  // radians
   // End joint in the start joint's frame, before the start joint rotates.
-  const float p0x = l2 * pm::sin(k);
-  const float p0y = -l1 - l2 * pm::cos(k);
+  float sk = 0, ck = 1;
+  pm::sincos(k, sk, ck);
+  const float p0x = l2 * sk;
+  const float p0y = -l1 - l2 * ck;
   // The twist (applied first, about Y) turns the hinge plane.
   const float c = twist_deg * kDegToRad;
-  const float p1x = p0x * pm::cos(c), p1y = p0y, p1z = -p0x * pm::sin(c);
+  float sc = 0, cc = 1;
+  pm::sincos(c, sc, cc);
+  const float p1x = p0x * cc, p1y = p0y, p1z = -p0x * sc;
   // Rx(b) must bring the z component to tz: p1z cos b + p1y sin b = tz.
   // Written as R cos(b + psi) with R = |(p1y, p1z)|, psi = atan2(-p1y, p1z);
   // the root near b = 0 is the one for a limb hanging down.
@@ -52,7 +56,9 @@ bool TwoBoneIKJob::Run() const {
     if (ratio > 1.0f || ratio < -1.0f) ok = false;
     b = pm::acos(std::clamp(ratio, -1.0f, 1.0f)) - pm::atan2(-p1y, p1z);
   }
-  const float qx = p1x, qy = p1y * pm::cos(b) - p1z * pm::sin(b);
+  float sb = 0, cb = 1;
+  pm::sincos(b, sb, cb);
+  const float qx = p1x, qy = p1y * cb - p1z * sb;
   // Rz(a) turns (qx, qy) onto (tx, ty); both have the same length.
   float a = pm::atan2(ty, tx) - pm::atan2(qy, qx);
   constexpr float kPi = 3.14159265358979f;

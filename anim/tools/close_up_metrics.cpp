@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
@@ -279,6 +280,14 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
   long limit_frames = 0;
 
   float worst_step[4] = {0, 0, 0, 0};
+  // Debugging aid: MATCHCAST_CLOSEUP_TRACE="SLOT FROM_SEQ TO_SEQ" prints that
+  // player's feet on every drawn frame (stderr).
+  // MATCHCAST_CLOSEUP_SLIDES=V lists the grounded feet faster than V m/s.
+  const double slides_over = std::getenv("MATCHCAST_CLOSEUP_SLIDES") ? std::atof(std::getenv("MATCHCAST_CLOSEUP_SLIDES")) : 0.0;
+  int trace_slot = -1;
+  unsigned trace_from = 0, trace_to = 0;
+  if (const char* t = std::getenv("MATCHCAST_CLOSEUP_TRACE"))
+    if (std::sscanf(t, "%d %u %u", &trace_slot, &trace_from, &trace_to) != 3) trace_slot = -1;
   PoseFrame drawn;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int subs = i + 1 < frames.size() ? m : 1;
@@ -337,6 +346,8 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             cx = std::min(cx, clearance(rig, g, rig.thigh[s], rig.foot[1 - s]));
             cx = std::min(cx, clearance(rig, g, rig.shin[s], rig.foot[1 - s]));
           }
+          if (slides_over > 0 && (ct < 0 || cs < 0 || cf < 0))
+            std::fprintf(stderr, "close seq %u+%d slot %zu thighs %.3f shins %.3f feet %.3f\n", f.seq, k, p, ct, cs, cf);
           if (ct < 0) ++r.thighs_close;
           if (cs < 0) ++r.shins_close;
           if (cf < 0) ++r.feet_close;
@@ -345,8 +356,13 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             r.clearance_worst_where = who(f, k, m, pp, ct < 0 ? "thighs" : cs < 0 ? "shins" : "feet");
           float depth = 0;
           for (int s = 0; s < 2; ++s)
-            for (int body : {rig.pelvis, rig.torso, rig.thigh[0], rig.thigh[1]})
-              depth = std::max(depth, hand_depth(rig, g, rig.hand[s], body));
+            for (int body : {rig.pelvis, rig.torso, rig.thigh[0], rig.thigh[1]}) {
+              const float dd = hand_depth(rig, g, rig.hand[s], body);
+              if (slides_over > 0 && dd > kHandDepthM)
+                std::fprintf(stderr, "hand %.3f seq %u+%d slot %zu hand %d in %s\n", dd, f.seq, k, p, s,
+                             skel.joints[static_cast<std::size_t>(body)].name.c_str());
+              depth = std::max(depth, dd);
+            }
           if (depth > kHandDepthM) ++r.hands_inside;
           if (depth > r.hand_depth_max_m) {
             r.hand_depth_max_m = depth;
@@ -381,6 +397,9 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             const glm::vec3 pb(g.world[static_cast<std::size_t>(j)] * glm::vec4(fa.contact_ls, 1.0f));
             const double v = std::hypot(pb.x - pa.x, pb.z - pa.z) / dt;
             r.grounded_mps[static_cast<std::size_t>(band)].values.push_back(v);
+            if (slides_over > 0 && v > slides_over)
+              std::fprintf(stderr, "slide %.2f m/s seq %u+%d slot %zu foot %d root %.1f m/s low %.3f -> %.3f\n", v, f.seq, k, p,
+                           s, root_v, fa.lowest, fb.lowest);
             if (v > 0.5) ++r.grounded_over_half[static_cast<std::size_t>(band)];
             if (v > r.grounded_worst_mps) {
               r.grounded_worst_mps = v;
@@ -426,11 +445,28 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
           const float low = std::min(g.feet[0].lowest, g.feet[1].lowest);
           if (low > kFloatAboveM && root_v < kFloatSlowerMps) {
             ++r.floating;
+            if (slides_over > 0) std::fprintf(stderr, "float %.3f seq %u+%d slot %zu root %.1f m/s\n", low, f.seq, k, p, root_v);
             if (low > r.floating_max_m) {
               r.floating_max_m = low;
               r.floating_where = who(f, k, m, pp, "");
             }
           }
+        }
+        if (static_cast<int>(p) == trace_slot && f.seq >= trace_from && f.seq <= trace_to) {
+          std::fprintf(stderr, "seq %u+%d x %.3f y %.3f z %.3f h %.1f pair %d", f.seq, k, pp.x, pp.y, pp.z, pp.heading, pair ? 1 : 0);
+          for (int s = 0; s < 2; ++s) {
+            const auto j = static_cast<std::size_t>(rig.foot[s]);
+            const glm::vec3 c(g.world[j] * glm::vec4(g.feet[s].contact_ls, 1.0f));
+            float v = 0;
+            if (pair && prev[p].feet[s].grounded && g.feet[s].grounded) {
+              const glm::vec3 pa(prev[p].world[j] * glm::vec4(prev[p].feet[s].contact_ls, 1.0f));
+              const glm::vec3 pb(g.world[j] * glm::vec4(prev[p].feet[s].contact_ls, 1.0f));
+              v = static_cast<float>(std::hypot(pb.x - pa.x, pb.z - pa.z) / dt);
+            }
+            std::fprintf(stderr, " | %c low %.3f %s c %.3f %.3f v %.2f", s == 0 ? 'R' : 'L', g.feet[s].lowest,
+                         g.feet[s].grounded ? "G" : "-", c.x, c.z, v);
+          }
+          std::fprintf(stderr, "\n");
         }
         std::swap(prev[p], cur[p]);
         have_prev[p] = true;
@@ -439,6 +475,25 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
   }
   const double end_t = static_cast<double>(frames.size()) * frame_s;
   for (std::size_t p = 0; p < kMaxPlayers; ++p) flush_run(p, end_t);
+  if (std::getenv("MATCHCAST_CLOSEUP_LIMITS") != nullptr && m == 1) {  // per dof, min and max
+    std::vector<long> lo(static_cast<std::size_t>(dofs), 0), hi(static_cast<std::size_t>(dofs), 0);
+    long n = 0;
+    for (const PoseFrame& f : frames)
+      for (const PlayerPose& pp : f.players) {
+        if ((pp.state & state_bits::kStand) == 0) continue;
+        ++n;
+        std::size_t k = 0;
+        for (const JointDef& jd : skel.joints)
+          for (std::size_t d = 0; d < jd.dofs.size(); ++d, ++k) {
+            if (pp.angles[k] <= jd.limits[d][0] + kAtLimitDeg) ++lo[k];
+            if (pp.angles[k] >= jd.limits[d][1] - kAtLimitDeg) ++hi[k];
+          }
+      }
+    for (int k = 0; k < dofs; ++k)
+      if (lo[static_cast<std::size_t>(k)] + hi[static_cast<std::size_t>(k)] > n / 1000)
+        std::fprintf(stderr, "limit dof %d: at min %.2f%%, at max %.2f%%\n", k, 100.0 * lo[static_cast<std::size_t>(k)] / n,
+                     100.0 * hi[static_cast<std::size_t>(k)] / n);
+  }
   // Time at the limits.
   for (std::size_t j = 0; j < skel.joints.size(); ++j) {
     const double share = limit_frames > 0 ? static_cast<double>(at_limit[j]) / static_cast<double>(limit_frames) : 0.0;
@@ -474,6 +529,8 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
     const std::size_t fi = seq - seq0;
     const int slot = player_index(e.side, e.unum);
     if (slot < 0) continue;
+    if (std::getenv("MATCHCAST_CLOSEUP_SLIDES") != nullptr && m == 1)
+      std::fprintf(stderr, "kick seq %llu slot %d\n", static_cast<unsigned long long>(seq), slot);
     const PlayerPose& pp = frames[fi].players[static_cast<std::size_t>(slot)];
     Geom g;
     pose(skel, rig, pp, g);
@@ -487,6 +544,9 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
     const glm::vec3 toe(w * glm::vec4(b.c + glm::vec3(b.h.x, 0, 0), 1.0f));
     const double dt_toe = glm::length(toe - bw) - view.ball_radius;
     r.kick_box_m.values.push_back(d);
+    if (std::getenv("MATCHCAST_CLOSEUP_SLIDES") != nullptr && m == 1)
+      std::fprintf(stderr, "kickdist %+.3f seq %llu slot %d foot %d ball %.3f %.3f\n", d, static_cast<unsigned long long>(seq), slot,
+                   e.foot == proto::Foot::Left ? 1 : 0, ball.x, ball.y);
     r.kick_toe_m.values.push_back(dt_toe);
     if (d < -kKickInsideM) ++r.kicks_inside;
     const double bad = d < 0 ? -d : d;

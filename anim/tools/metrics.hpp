@@ -1,4 +1,6 @@
-// The quality metrics of an animated log, each with its target (issue 4):
+// The animator's own bookkeeping of an animated log (issue 4), kept for the
+// mocap mode's tests and --compare; the quality tool's figures are issue
+// 23's, measured on the stream (close_up_metrics.hpp). Each with its target:
 // root error at cycles, planted-foot slide, foot-to-ball distance at kick
 // contact, cadence, joint-limit violations and the largest per-frame joint
 // jump outside kicks and teleports; also how far a body goes under the grass
@@ -27,7 +29,7 @@ struct Distribution {
 struct QualityReport {
   Distribution root_error_m;     // |pose root - 2D position| at substep-0 frames, active players
   Distribution slide_m;          // per stance: largest horizontal distance of the ankle from its landing spot
-  Distribution contact_m;        // per kick: | |strike point - ball centre| - ball radius |
+  Distribution contact_m;        // per kick: |distance from the kicking foot's box to the ball's surface|
   Distribution cadence;          // per stride (two steps): steps/s
   Distribution step_in_m;        // per kick: root offset on the contact frame from the mid-point of its neighbours
   double lowest_m = 0;           // lowest point of any drawn segment of any active player (0 = the grass)
@@ -56,6 +58,9 @@ inline constexpr double kGroundTolerance = 0.02;
 // Largest root offset a step-in may add on a kick's contact frame (m): the
 // root leaves its path for that one frame only, so more reads as a jerk.
 inline constexpr double kMaxStepInTarget = 0.30;
+// Largest per-dof change between frames outside actions and resets (deg):
+// issue 23's human angular speed for a leg, 60 deg per 50 ms.
+inline constexpr double kMaxJumpTarget = 60.0;
 
 // Measures everything over a whole animated log. `states` are the input in
 // stream order (frames refer to them by seq / 2).

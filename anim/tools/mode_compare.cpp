@@ -36,8 +36,8 @@ std::string format_comparison(const QualityReport& k, const QualityReport& m) {
   std::snprintf(line, sizeof line, "%-32s %9ld %-4s %9ld %-4s   0\n", "joint-limit violations", k.limit_violations,
                 k.limit_violations == 0 ? "ok" : "FAIL", m.limit_violations, m.limit_violations == 0 ? "ok" : "FAIL");
   out += line;
-  row("largest joint jump (deg)", k.max_jump_deg, m.max_jump_deg, "<= 15", k.max_jump_deg <= 15.0,
-      m.max_jump_deg <= 15.0);
+  row("largest joint jump (deg)", k.max_jump_deg, m.max_jump_deg, "<= 60", k.max_jump_deg <= kMaxJumpTarget,
+      m.max_jump_deg <= kMaxJumpTarget);
   row("lowest point (m)", k.lowest_m, m.lowest_m, ">= -0.02", k.lowest_m >= -kGroundTolerance,
       m.lowest_m >= -kGroundTolerance);
   row("step-in on contact max (m)", k.step_in_m.max(), m.step_in_m.max(), "<= 0.30",

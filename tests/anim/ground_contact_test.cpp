@@ -77,7 +77,7 @@ TEST(GroundContact, WholeBodyActionsRestOnTheGrass) {
       in.layer = &layer;
       in.reset = tau < -0.1f;
       PlayerPose out;
-      animate_player(ctx, in, LocomotionParams{}, human_skeleton(), out);
+      animate_player(ctx, in, FootstepParams{}, human_skeleton(), out);
       std::array<float, kMaxDof> a{};
       for (int d = 0; d < dof::kCount; ++d) a[static_cast<std::size_t>(d)] = out.angles[static_cast<std::size_t>(d)];
       const float low = lowest_point_ms(human_skeleton(), pose_models(a, out.z));

@@ -35,7 +35,7 @@ TEST(QualityMetrics, HoldOnASyntheticRun) {
   EXPECT_EQ(q.frames, 160);
   EXPECT_LE(q.root_error_m.max(), 1e-4);
   EXPECT_EQ(q.limit_violations, 0);
-  EXPECT_LE(q.max_jump_deg, 15.0);
+  EXPECT_LE(q.max_jump_deg, kMaxJumpTarget);
   EXPECT_LE(q.cadence.max(), 4.5);
   EXPECT_LE(q.slide_m.mean(), 0.02);
   EXPECT_GT(q.cadence.values.size(), 5u);

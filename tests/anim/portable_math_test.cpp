@@ -47,6 +47,27 @@ TEST(PortableMath, SinCosWithinTwoUlpOfTheCLibrary) {
   EXPECT_NEAR(pm::sin(1e7), std::sin(1e7), 1e-6);  // far out: wrapped into one turn first
 }
 
+TEST(PortableMath, SincosIsSinAndCosBitForBit) {
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> any(-40.0, 40.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double x = any(rng);
+    double s = 0, c = 0;
+    pm::sincos(x, s, c);
+    ASSERT_EQ(s, pm::sin(x)) << x;
+    ASSERT_EQ(c, pm::cos(x)) << x;
+    const auto xf = static_cast<float>(x);
+    float sf = 0, cf = 0;
+    pm::sincos(xf, sf, cf);
+    ASSERT_EQ(sf, pm::sin(xf)) << xf;
+    ASSERT_EQ(cf, pm::cos(xf)) << xf;
+  }
+  double s = 1, c = 0;
+  pm::sincos(-0.0, s, c);
+  EXPECT_TRUE(std::signbit(s));
+  EXPECT_EQ(c, 1.0);
+}
+
 TEST(PortableMath, Atan2WithinTwoUlpAndCsSpecialCases) {
   std::mt19937_64 rng(2);
   std::uniform_real_distribution<double> any(-100.0, 100.0);

@@ -32,10 +32,10 @@ struct Bounds {
   double step_in_m;
 };
 
-constexpr Bounds kAt20Hz{0.20, 7.3, 0.02, 0.19, 130, 120, 119, 45, 123, 1000, 1710, 590, 2070, 3020, 1030, 0.30, 5.5,
-                         -0.021, 0.31};
-constexpr Bounds kAt60Hz{0.24, 7.8, 0.02, 0.19, 130, 124, 121, 45, 123, 3310, 4810, 1550, 5830, 8750, 3270, 0.30, 6.0,
-                         -0.21, 0.31};
+constexpr Bounds kAt20Hz{0.20, 4.8, 0.02, 0.12, 0, 60, 45, 45, 45, 850, 1050, 320, 160, 970, 1560, 0.02, 4.5,
+                         -0.02, 0.31};
+constexpr Bounds kAt60Hz{0.20, 3.1, 0.02, 0.12, 0, 60, 45, 45, 45, 3100, 2720, 910, 480, 2610, 3950, 0.02, 5.0,
+                         -0.12, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
   SCOPED_TRACE(what);

@@ -98,7 +98,7 @@ TEST(MocapWalk, ASlowWalkIsAnimatedFromTheGraphWithinTheTargets) {
   // strike (joint speed limit): measured 9.5 cm at worst here.
   EXPECT_LE(q.slide_m.max(), 0.12) << tools::format_report(q);
   EXPECT_LE(q.cadence.max(), 4.5) << tools::format_report(q);
-  EXPECT_LE(q.max_jump_deg, 15.0) << tools::format_report(q);
+  EXPECT_LE(q.max_jump_deg, tools::kMaxJumpTarget) << tools::format_report(q);
   EXPECT_LE(q.root_error_m.max(), 0.01);
   EXPECT_GE(q.lowest_m, -tools::kGroundTolerance);
 }

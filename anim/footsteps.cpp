@@ -1,0 +1,445 @@
+#include "anim/footsteps.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "anim/body_frame.hpp"
+#include "anim/human_skeleton.hpp"
+#include "anim/portable_math.hpp"
+
+namespace mc::anim {
+namespace {
+
+constexpr float kSide[2] = {1.0f, -1.0f};  // +1 right (+Z), -1 left
+// The sole (bottom of the foot's box): centre ahead of the ankle, half length.
+constexpr float kSoleCentre = 0.5f * (dims::kFootFront - dims::kFootBack);  // 0.06
+constexpr float kSettleSwingS = 0.32f;  // s, a settling step's swing
+constexpr float kApproachSlope = 0.4f;  // m up per m still to travel, coming down
+constexpr float kPassLength = 0.32f;    // m along the body within which two feet are side by side
+constexpr float kMaxHeelRise = -35.0f;  // deg, the most a planted foot rolls up on its toes
+
+float wrap01(float p) { return p - std::floor(p); }
+
+// Where the root is `t` seconds from now along the path ahead (then
+// straight on at the last known velocity, for at most 0.6 s more).
+void root_at(const FootstepInput& in, float t, float& x, float& y) {
+  const float dt = in.dt > 1e-4f ? in.dt : 0.05f;
+  float px = in.x, py = in.y, pt = 0;
+  float vx = 0, vy = 0;
+  for (int k = 0; k < in.ahead_n && k < kPathAhead; ++k) {
+    const float kt = dt * static_cast<float>(k + 1);
+    vx = (in.ahead_x[k] - px) / dt;
+    vy = (in.ahead_y[k] - py) / dt;
+    if (t <= kt) {
+      const float w = (t - pt) / dt;
+      x = px + (in.ahead_x[k] - px) * w;
+      y = py + (in.ahead_y[k] - py) * w;
+      return;
+    }
+    px = in.ahead_x[k];
+    py = in.ahead_y[k];
+    pt = kt;
+  }
+  const float rest = std::min(t - pt, 0.6f);
+  x = px + vx * rest;
+  y = py + vy * rest;
+}
+
+// The horizontal ease of a swing: still for its first 8 % (the foot rises
+// before it travels), then speeding up, cruising and slowing down to a stop
+// over the last third (the foot comes down with hardly any speed over the
+// grass: the body catches up with it).
+float swing_ease(float u) {
+  constexpr float a = 0.08f, r1 = 0.2f, r2 = 0.4f;
+  constexpr float area = 1.0f - 0.5f * r1 - 0.5f * r2;
+  const float w = clampf((u - a) / (1.0f - a), 0.0f, 1.0f);
+  if (w < r1) return 0.5f * w * w / r1 / area;
+  if (w < 1.0f - r2) return (0.5f * r1 + (w - r1)) / area;
+  const float q = 1.0f - w;
+  return 1.0f - 0.5f * q * q / r2 / area;
+}
+
+// The rise of a swing above its straight line, peak 1: symmetric when
+// walking, earlier when running (the heel comes up behind first).
+float swing_bump(float u, float run) {
+  const float walk = 4.0f * u * (1.0f - u);
+  const float sprint = 6.75f * u * (1.0f - u) * (1.0f - u);
+  return walk + (sprint - walk) * run;
+}
+
+void to_target(const BodyFrame& body, float ax, float ay, float ah, float yaw, float pitch, FootTarget& t) {
+  body.to_body(ax, ay, t.ankle_ms[0], t.ankle_ms[2]);
+  t.ankle_ms[1] = ah;
+  t.yaw_deg = -delta_deg(yaw, body.heading);
+  t.pitch_deg = pitch;
+}
+
+// Lowest sole height of a foot whose ankle is at height `ah` with the sole pitched by `pitch`.
+float sole_height(float ah, float pitch) {
+  float s = 0, c = 1;
+  pm::sincos(pitch * kDeg, s, c);
+  const float toe = dims::kFootFront * s - dims::kAnkleHeight * c;
+  const float heel = -dims::kFootBack * s - dims::kAnkleHeight * c;
+  return ah + std::min(toe, heel);
+}
+
+void rest_spot(const BodyFrame& body, int foot, float spacing, float& x, float& y) {
+  body.to_field(kSoleCentre, kSide[foot] * spacing, x, y);
+}
+
+void plant(FootState& f, float x, float y, float yaw, float pitch) {
+  f.planted = true;
+  f.x = x; f.y = y; f.yaw = yaw; f.pitch = pitch;
+  f.u = 0;
+  f.stance_s = 0;
+  f.release = false;
+}
+
+void lift(FootState& f, float phase_left, float lift_m) {
+  float ax, ay, ah;
+  planted_ankle(f.x, f.y, f.yaw, f.pitch, ax, ay, ah);
+  f.planted = false;
+  f.ax = ax; f.ay = ay; f.ah = ah;
+  f.cx = ax; f.cy = ay;
+  f.ayaw = f.yaw; f.apitch = f.pitch;
+  f.bx = ax; f.by = ay; f.byaw = f.yaw; f.bpitch = 0;
+  f.u = 0;
+  f.extra = 0;
+  f.phase_left = std::max(phase_left, 0.05f);
+  f.lift = lift_m;
+  f.release = false;
+}
+
+// Ankle of a swinging foot at its progress.
+void swing_ankle(const FootState& f, float run, float& x, float& y, float& h, float& yaw, float& pitch) {
+  const float v = smoothstep(f.u);
+  float bh, bx, by;
+  planted_ankle(f.bx, f.by, f.byaw, f.bpitch, bx, by, bh);
+  x = f.cx;
+  y = f.cy;
+  h = f.ah + (bh - f.ah) * v + f.lift * swing_bump(f.u, run);
+  // A steep approach: in the second half of the swing, the further it still
+  // has to go, the higher it stays (up to the swing's own height), so that
+  // it never travels low over the grass.
+  if (f.u > 0.5f) h = std::max(h, bh + std::min(kApproachSlope * pm::hypot(bx - x, by - y), f.lift));
+  yaw = lerp_deg(f.ayaw, f.byaw, v);
+  // The toes come level early in the swing and meet the landing's pitch at its end.
+  pitch = f.apitch * (1.0f - smoothstep(f.u / 0.4f)) + f.bpitch * smoothstep((f.u - 0.6f) / 0.4f);
+}
+
+}  // namespace
+
+void planted_ankle(float x, float y, float yaw_deg, float pitch_deg, float& ax, float& ay, float& ah) {
+  // The edge it rolls over (heel for toes up, toes for heel up) stays on the
+  // grass; the flat sole's centre is (x, y).
+  const float e = pitch_deg > 0 ? -dims::kFootBack : dims::kFootFront;  // that edge, ahead of the ankle
+  float s = 0, c = 1, ux = 1, uy = 0;
+  pm::sincos(pitch_deg * kDeg, s, c);
+  pm::sincos(yaw_deg * kDeg, uy, ux);
+  const float along = (e - kSoleCentre) + (-e * c - dims::kAnkleHeight * s);
+  ax = x + ux * along;
+  ay = y + uy * along;
+  ah = -e * s + dims::kAnkleHeight * c;
+}
+
+void take_over_foot(FootstepState& st, int foot, float x, float y, float h, float yaw, float pitch, bool planted) {
+  FootState& f = st.feet[foot];
+  if (planted) {
+    if (!f.planted) f.since_landing = 0;
+    plant(f, x, y, yaw, pitch);
+  } else {
+    f.planted = false;
+    f.ax = f.bx = f.cx = x;
+    f.ay = f.by = f.cy = y;
+    f.ah = h;
+    f.ayaw = f.byaw = yaw;
+    f.apitch = pitch;
+    f.bpitch = 0;
+    f.u = 0.3f;
+    f.phase_left = 0.25f;
+    f.lift = 0.05f;
+  }
+}
+
+void take_over_feet(FootstepState& st, const float ankle_x[2], const float ankle_y[2], const float yaw[2],
+                    const bool planted[2], const bool take[2]) {
+  for (int i = 0; i < 2; ++i) {
+    if (!take[i]) continue;
+    const float ux = pm::cos(yaw[i] * kDeg), uy = pm::sin(yaw[i] * kDeg);
+    if (planted[i])
+      take_over_foot(st, i, ankle_x[i] + ux * kSoleCentre, ankle_y[i] + uy * kSoleCentre, 0, yaw[i], 0, true);
+    else
+      take_over_foot(st, i, ankle_x[i], ankle_y[i], dims::kAnkleHeight, yaw[i], 0, false);
+  }
+}
+
+void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepParams& prm, FootstepOutput& out) {
+  const float dt = in.dt > 1e-4f ? in.dt : 0.05f;
+  const BodyFrame body(in.x, in.y, in.heading);
+  if (!s.initialized || in.reset) {
+    s.initialized = true;
+    s.x = in.x; s.y = in.y; s.heading = in.heading;
+    s.vx = s.vy = s.speed = 0;
+    s.moving = false;
+    s.run = 0;
+    s.pelvis_height = 0.975f;
+    for (int i = 0; i < 2; ++i) {
+      float x, y;
+      rest_spot(body, i, prm.foot_spacing, x, y);
+      plant(s.feet[i], x, y, in.heading, 0);
+      s.feet[i].since_landing = 100;
+      s.feet[i].stance_s = 1;
+    }
+    s.phase = 0.25f;
+  }
+  // Velocity along the path, centred on this frame where the look-ahead
+  // allows, lightly smoothed; the gait follows a slower speed.
+  {
+    float nx, ny;
+    root_at(in, dt, nx, ny);
+    const float vx = 0.5f * (nx - s.x) / dt, vy = 0.5f * (ny - s.y) / dt;
+    const float k = 1.0f - pm::exp2(-dt / 0.08f);
+    s.vx += (vx - s.vx) * k;
+    s.vy += (vy - s.vy) * k;
+  }
+  const float v_path = pm::hypot(s.vx, s.vy);
+  // Players stop in a cycle or two: the gait slows down faster than it
+  // speeds up, so that a stopped body does not keep running in the air.
+  s.speed += (v_path - s.speed) * (1.0f - pm::exp2(-dt / (v_path < s.speed ? 0.04f : 0.1f)));
+  const GaitTiming gait = human_gait(s.speed, prm.cadence_cap, in.stamina);
+  s.cycle_m = 2.0f * gait.step_length;
+  s.run += (gait.run - s.run) * (1.0f - pm::exp2(-dt / (gait.run < s.run ? 0.05f : 0.12f)));
+
+  // Moving or standing. Standing players drift a little; the classifier's
+  // stand/turn keeps them settling unless they clearly move.
+  const bool want_move = (s.speed > prm.idle_speed && !in.rest) || s.speed > 1.0f;
+  if (want_move && !s.moving) {
+    // Start with the foot further behind (relative to the travel), which
+    // will be the first to lift.
+    float ux = s.vx, uy = s.vy;
+    const float n = pm::hypot(ux, uy);
+    if (n > 1e-4f) { ux /= n; uy /= n; }
+    const float back0 = ux * (s.feet[0].x - in.x) + uy * (s.feet[0].y - in.y);
+    const float back1 = ux * (s.feet[1].x - in.x) + uy * (s.feet[1].y - in.y);
+    const bool right_first = !s.feet[0].planted ? true : (!s.feet[1].planted ? false : back0 <= back1);
+    s.phase = right_first ? gait.duty : wrap01(gait.duty + 0.5f);
+    s.moving = true;
+  } else if (!want_move && s.moving && s.speed < prm.idle_speed * 0.8f) {
+    s.moving = false;
+  }
+  const float dphase = s.moving ? 0.5f * gait.cadence * dt : 0.0f;
+  s.phase = wrap01(s.phase + dphase);
+
+  const int min_frames = static_cast<int>(std::ceil(2.0f / (prm.hard_cadence_cap * dt) - 1e-3f));
+  float hip_nx, hip_ny;  // root at the next frame
+  root_at(in, dt, hip_nx, hip_ny);
+  const BodyFrame next_body(hip_nx, hip_ny, in.heading);
+
+  // The pelvis a gait wants (before the legs' reach): lower when moving and
+  // lower still when running.
+  const float amp = s.moving ? clampf(s.speed / 1.5f, 0.0f, 1.0f) : 0.0f;
+  const float stride_pelvis = 0.975f - 0.035f * amp * (1.0f - s.run) - 0.05f * s.run;
+
+  for (int i = 0; i < 2; ++i) {
+    FootState& f = s.feet[i];
+    FootState& o = s.feet[1 - i];
+    ++f.since_landing;
+    if (f.held) { f.release = false; continue; }
+    if (f.planted) {
+      f.stance_s += dt;
+      // Pivot: a foot turned well away from the heading turns about its sole's centre.
+      const float off = delta_deg(in.heading, f.yaw);
+      if (std::fabs(off) > prm.pivot_deg && f.pitch == 0)
+        f.yaw = wrap_deg(f.yaw + clampf(off - (off > 0 ? prm.pivot_deg : -prm.pivot_deg), -prm.pivot_rate_deg,
+                                        prm.pivot_rate_deg));
+      // Roll: heel strike levels off over 0.1 s; the heel rises through the
+      // second half of a stride's stance (push-off).
+      float progress = 0;
+      if (s.moving) {
+        const float fp = wrap01(s.phase - 0.5f * static_cast<float>(i));
+        progress = fp < gait.duty ? fp / gait.duty : 1.0f;
+      }
+      if (f.pitch > 0) f.pitch = std::max(0.0f, f.pitch - 60.0f * dt);
+      else if (s.moving) f.pitch = std::min(f.pitch, std::max(f.pitch - 240.0f * dt, -30.0f * smoothstep((progress - 0.55f) / 0.45f)));
+      else f.pitch = std::min(0.0f, f.pitch + 60.0f * dt);
+      // Lift off: the gait's phase, the caller's release, or the hip about to
+      // leave the foot behind (pushing off from the toes).
+      // The caller's release (the joint speed limit held the leg back)
+      // lifts the foot only if the other one bears the body.
+      bool go = f.release && (o.planted || s.run > 0.5f);
+      float phase_left = 0.5f;
+      if (s.moving) {
+        const float fp = wrap01(s.phase - 0.5f * static_cast<float>(i));
+        const bool due = fp >= gait.duty && f.stance_s > 0.049f;
+        // Walking: the other foot must be down first (double support).
+        const bool support_ok = (s.run > 0.5f && v_path > 2.0f) || o.planted;
+        phase_left = 1.0f - fp;
+        float ax, ay, ah;
+        planted_ankle(f.x, f.y, f.yaw, kMaxHeelRise, ax, ay, ah);
+        float hx, hz;
+        next_body.to_body(ax, ay, hx, hz);
+        hz -= kSide[i] * dims::kHipHalfWidth;
+        const float hip_h = stride_pelvis - 0.03f - dims::kHipDrop;
+        const float reach2 = prm.reach * prm.reach - (hip_h - ah) * (hip_h - ah);
+        const bool out_of_reach = hx * hx + hz * hz > std::max(reach2, 0.0f);
+        // Walking, a foot that is due waits for the other to land (that one
+        // hurries, below) rather than leave the body in the air; one about to
+        // be left out of reach goes anyway.
+        if ((due && support_ok) || out_of_reach) go = true;
+        if (due && !support_ok) o.hurry = true;
+        if (out_of_reach && fp < gait.duty) phase_left = 1.0f - fp;  // leaves early: a longer swing
+      } else {
+        // Settling: the foot further from its resting spot steps, one at a
+        // time, the other down for at least 0.15 s.
+        float rx, ry;
+        rest_spot(body, i, prm.foot_spacing, rx, ry);
+        const float d = pm::hypot(f.x - rx, f.y - ry);
+        const float dyaw = std::fabs(delta_deg(f.yaw, in.heading));
+        float orx, ory;
+        rest_spot(body, 1 - i, prm.foot_spacing, orx, ory);
+        const float od = pm::hypot(o.x - orx, o.y - ory);
+        const bool off_rest = d > prm.rest_tolerance || dyaw > prm.rest_yaw_tolerance;
+        const bool my_turn = d >= od || !(od > prm.rest_tolerance);
+        if (off_rest && my_turn && o.planted && o.stance_s >= 0.15f && f.stance_s >= 0.15f) go = true;
+        phase_left = 0.5f;
+      }
+      if (go) {
+        const float lift_m = s.moving ? 0.09f + 0.20f * s.run * clampf((s.speed - 2.0f) / 6.0f, 0.2f, 1.0f) : 0.07f;
+        lift(f, phase_left, lift_m);
+        // This frame's share of the swing.
+        f.u = 0;
+      }
+      if (f.planted) continue;
+    }
+    // In the air: progress, landing spot, touch-down.
+    float du = s.moving ? dphase / f.phase_left : dt / kSettleSwingS;
+    if (f.hurry) du = std::max(du, std::min(2.0f * du, 0.34f));  // the other foot waits for this one
+    f.hurry = false;
+    // A human cadence: the swing stretches so that the foot lands no sooner
+    // than the cadence cap allows after its previous landing.
+    {
+      const int wait = min_frames - f.since_landing;
+      if (wait > 0 && f.u + du * static_cast<float>(wait) >= 1.0f) du = (1.0f - f.u) / static_cast<float>(wait + 1);
+    }
+    const float u0 = f.u;
+    f.u = std::min(f.u + du, 1.0f);
+    // Where it lands: under the hip at mid-stance (the root half a stance
+    // after the touch-down), at most a comfortable reach ahead of the hip at
+    // the touch-down, and on its own side of the other foot. Planned every
+    // frame: the ankle only covers its share of what is left (below).
+    {
+      const float t_land = std::ceil(std::max(0.0f, (1.0f - f.u) / std::max(du, 1e-4f)) - 1e-3f) * dt;
+      float mx, my, lx, ly;
+      if (s.moving) {
+        root_at(in, t_land + 0.5f * gait.stance_s, mx, my);
+        root_at(in, t_land, lx, ly);
+      } else {
+        mx = lx = in.x;
+        my = ly = in.y;
+      }
+      const BodyFrame land(lx, ly, in.heading);
+      float bx, bz;
+      land.to_body(mx, my, bx, bz);  // mid-stance root, seen from the landing root
+      const float front = 0.30f + 0.05f * (1.0f - s.run);
+      const float along = pm::hypot(bx, bz);
+      if (along > front) { bx *= front / along; bz *= front / along; }
+      bx += kSoleCentre;
+      bz += kSide[i] * prm.foot_spacing;
+      // The other foot, where it is or will be.
+      float ox, oz;
+      land.to_body(o.planted ? o.x : o.bx, o.planted ? o.y : o.by, ox, oz);
+      if (kSide[i] * (bz - oz) < prm.min_gap) bz = oz + kSide[i] * prm.min_gap;
+      float tx, ty;
+      land.to_field(bx, bz, tx, ty);
+      // Re-planned every frame: early in the swing the foot has barely left
+      // (the ease is flat), late in it the look-ahead covers the landing.
+      f.bx = tx;
+      f.by = ty;
+      f.byaw = in.heading;
+      f.bpitch = s.moving ? 6.0f * (1.0f - s.run) : 0.0f;
+    }
+    // The ankle covers its share of what is left to the landing spot (so a
+    // landing spot that moves never makes the foot jump), at most 0.85 m a
+    // frame.
+    {
+      float tx, ty, th;
+      planted_ankle(f.bx, f.by, f.byaw, f.bpitch, tx, ty, th);
+      const float w0 = swing_ease(u0), w1 = swing_ease(f.u);
+      const float frac = w0 < 0.9999f ? (w1 - w0) / (1.0f - w0) : 1.0f;
+      float dx = (tx - f.cx) * frac, dy = (ty - f.cy) * frac;
+      const float dn = pm::hypot(dx, dy);
+      if (dn > 0.85f) { dx *= 0.85f / dn; dy *= 0.85f / dn; }
+      f.cx += dx;
+      f.cy += dy;
+      // It passes the other foot on its own side, a sole's width clear.
+      float ox, oy, oh;
+      if (o.planted) planted_ankle(o.x, o.y, o.yaw, o.pitch, ox, oy, oh);
+      else { ox = o.cx; oy = o.cy; }
+      float fbx, fbz, obx, obz;
+      body.to_body(f.cx, f.cy, fbx, fbz);
+      body.to_body(ox, oy, obx, obz);
+      if (std::fabs(fbx - obx) < kPassLength && kSide[i] * (fbz - obz) < prm.min_gap) {
+        fbz = obz + kSide[i] * prm.min_gap;
+        body.to_field(fbx, fbz, f.cx, f.cy);
+      }
+    }
+    // It lands on its spot, within reach of the hip at the next frame;
+    // else it swings on for a frame (it stays up: swing_ankle's approach).
+    if (f.u >= 1.0f) {
+      float tx, ty, th;
+      planted_ankle(f.bx, f.by, f.byaw, f.bpitch, tx, ty, th);
+      float hx, hz;
+      next_body.to_body(tx, ty, hx, hz);
+      hz -= kSide[i] * dims::kHipHalfWidth;
+      const float hip_h = stride_pelvis - 0.04f - dims::kHipDrop - th;
+      const bool reachable = hx * hx + hz * hz + hip_h * hip_h <= prm.reach * prm.reach;
+      const bool arrived = pm::hypot(tx - f.cx, ty - f.cy) <= 0.06f;
+      if (!(reachable && arrived) && f.extra < 4) {
+        f.u = 0.9f;
+        ++f.extra;
+      }
+    }
+    if (f.u >= 1.0f) {
+      {
+        // It lands where it is (the spot, unless the speed cap kept it short).
+        const float ux = pm::cos(f.byaw * kDeg), uy = pm::sin(f.byaw * kDeg);
+        float tx, ty, th;
+        planted_ankle(f.bx, f.by, f.byaw, f.bpitch, tx, ty, th);
+        f.bx += f.cx - tx;
+        f.by += f.cy - ty;
+        (void)ux; (void)uy;
+        plant(f, f.bx, f.by, f.byaw, f.bpitch);
+        f.since_landing = 0;
+        ++s.steps;
+      }
+    }
+  }
+
+  // Output: the rhythm at the gait phase, the pelvis the gait wants, both
+  // feet's ankles in body space.
+  SampleGaitJob sample{gait_keys(), s.phase * kReferenceCycleM, &out.sample, nullptr, nullptr};
+  sample.Run();
+  const float pelvis = stride_pelvis +
+                       amp * (0.012f * (1.0f - s.run) * out.sample.bob_walk + 0.025f * s.run * out.sample.bob_run);
+  s.pelvis_height = pelvis;
+  out.pelvis_height = pelvis;
+  out.run = s.run;
+  out.amplitude = amp;
+  for (int i = 0; i < 2; ++i) {
+    const FootState& f = s.feet[i];
+    float ax, ay, ah, yaw, pitch;
+    if (f.planted) {
+      planted_ankle(f.x, f.y, f.yaw, f.pitch, ax, ay, ah);
+      yaw = f.yaw;
+      pitch = f.pitch;
+    } else {
+      swing_ankle(f, s.run, ax, ay, ah, yaw, pitch);
+    }
+    to_target(body, ax, ay, ah, yaw, pitch, out.feet[i]);
+    out.planted[i] = f.planted;
+    out.sole_h[i] = f.planted ? 0.0f : std::max(0.0f, sole_height(ah, pitch));
+  }
+  s.x = in.x; s.y = in.y; s.heading = in.heading;
+}
+
+}  // namespace mc::anim

@@ -1,0 +1,169 @@
+#include "anim/footsteps.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "anim/body_frame.hpp"
+#include "anim/gait_timing.hpp"
+
+namespace mc::anim {
+namespace {
+
+struct Trip {
+  int touchdowns = 0;
+  double max_planted_drift = 0;     // m a planted foot moved on the grass
+  std::vector<int> touchdown_frames[2];
+  int frames_in_flight = 0;         // both feet in the air
+  int frames = 0;
+};
+
+// Drives one player along +x (or turning on the spot): `speed_of(frame)`
+// m/s, 20 frames per second, with the look-ahead's path of the next frames.
+template <class SpeedFn>
+Trip drive(FootstepState& s, int frames, SpeedFn speed_of, float heading_rate = 0) {
+  Trip r;
+  FootstepParams prm;
+  const float dt = 0.05f;
+  std::vector<float> xs(static_cast<std::size_t>(frames) + kPathAhead + 1);
+  float x = s.initialized ? s.x : 0;
+  for (std::size_t f = 0; f < xs.size(); ++f) {
+    xs[f] = x;
+    x += speed_of(static_cast<int>(f)) * dt;
+  }
+  float heading = s.initialized ? s.heading : 0;
+  FootState before[2] = {s.feet[0], s.feet[1]};
+  bool first = !s.initialized;
+  for (int f = 0; f < frames; ++f) {
+    FootstepInput in;
+    in.x = xs[static_cast<std::size_t>(f)];
+    in.heading = heading;
+    in.dt = dt;
+    for (int k = 0; k < kPathAhead; ++k) in.ahead_x[k] = xs[static_cast<std::size_t>(f + k + 1)];
+    in.ahead_n = kPathAhead;
+    in.rest = speed_of(f) < 0.3f;
+    FootstepOutput out;
+    step_footsteps(s, in, prm, out);
+    heading = wrap_deg(heading + heading_rate * dt);
+    ++r.frames;
+    if (!s.feet[0].planted && !s.feet[1].planted) ++r.frames_in_flight;
+    for (int i = 0; i < 2; ++i) {
+      if (!first && s.feet[i].planted && before[i].planted)
+        r.max_planted_drift = std::max(r.max_planted_drift,
+                                       static_cast<double>(std::hypot(s.feet[i].x - before[i].x, s.feet[i].y - before[i].y)));
+      if (!first && s.feet[i].planted && !before[i].planted) {
+        ++r.touchdowns;
+        r.touchdown_frames[i].push_back(f);
+      }
+      before[i] = s.feet[i];
+    }
+    first = false;
+  }
+  return r;
+}
+
+TEST(GaitTiming, StepLengthAndCadenceFollowTheSpeed) {
+  float last_step = 0, last_cadence = 0;
+  for (float v = 0.5f; v <= 11.0f; v += 0.25f) {
+    const GaitTiming g = human_gait(v);
+    EXPECT_GT(g.step_length, last_step) << v;
+    EXPECT_GE(g.cadence, last_cadence - 1e-4f) << v;
+    EXPECT_LE(g.cadence, 4.0f + 1e-4f) << v;
+    EXPECT_NEAR(g.cadence * g.step_length, v, 1e-3f) << v;
+    last_step = g.step_length;
+    last_cadence = g.cadence;
+  }
+  // Walking shares the ground (duty factor over a half), running flies.
+  EXPECT_GT(human_gait(1.2f).duty, 0.55f);
+  EXPECT_EQ(human_gait(1.2f).run, 0.0f);
+  EXPECT_LT(human_gait(5.0f).duty, 0.4f);
+  EXPECT_EQ(human_gait(5.0f).run, 1.0f);
+  // Contact time falls towards a sprinter's 0.1 s.
+  EXPECT_GT(human_gait(3.5f).stance_s, 0.2f);
+  EXPECT_LT(human_gait(9.0f).stance_s, 0.13f);
+  // A tired player takes shorter steps.
+  EXPECT_LT(human_gait(6.0f, 4.0f, 0.1f).step_length, human_gait(6.0f).step_length);
+}
+
+TEST(Footsteps, PlantedFeetDoNotSlideAtAnySpeed) {
+  for (float v : {0.6f, 1.5f, 3.0f, 6.0f, 9.0f}) {
+    FootstepState s;
+    const Trip r = drive(s, 200, [v](int f) { return f < 5 ? 0.0f : v; });
+    EXPECT_GT(r.touchdowns, 10) << v;
+    EXPECT_EQ(r.max_planted_drift, 0.0) << v;
+  }
+}
+
+TEST(Footsteps, WalkingKeepsAFootDownRunningFlies) {
+  FootstepState walk, run;
+  const Trip w = drive(walk, 200, [](int) { return 1.3f; });
+  const Trip r = drive(run, 200, [](int) { return 6.0f; });
+  EXPECT_EQ(w.frames_in_flight, 0);
+  EXPECT_GT(r.frames_in_flight, 20);
+}
+
+TEST(Footsteps, CadenceStaysHumanAtTopSpeed) {
+  for (float v : {3.0f, 7.0f, 10.5f}) {
+    FootstepState s;
+    const Trip r = drive(s, 400, [v](int) { return v; });
+    // A foot lands at most every 10 frames (4 steps/s with both feet).
+    for (int i = 0; i < 2; ++i)
+      for (std::size_t k = 1; k < r.touchdown_frames[i].size(); ++k)
+        EXPECT_GE(r.touchdown_frames[i][k] - r.touchdown_frames[i][k - 1], 10) << v;
+    // At top speed the stride grew instead: over 2 m per step.
+    if (v > 10) {
+      EXPECT_GT(s.cycle_m, 4.5f);
+    }
+  }
+}
+
+TEST(Footsteps, ComesToAStandstillWithBothFeetUnderTheHips) {
+  FootstepState s;
+  drive(s, 60, [](int) { return 4.0f; });
+  drive(s, 60, [](int) { return 0.0f; });
+  ASSERT_TRUE(s.feet[0].planted);
+  ASSERT_TRUE(s.feet[1].planted);
+  const BodyFrame body(s.x, s.y, 0);
+  for (int i = 0; i < 2; ++i) {
+    float bx, bz;
+    body.to_body(s.feet[i].x, s.feet[i].y, bx, bz);
+    EXPECT_LT(std::fabs(bx - 0.06f), 0.1f);
+    EXPECT_NEAR(bz, i == 0 ? 0.11f : -0.11f, 0.08f);
+  }
+  const Trip still = drive(s, 40, [](int) { return 0.0f; });
+  EXPECT_EQ(still.touchdowns, 0);
+  EXPECT_FALSE(s.moving);
+}
+
+TEST(Footsteps, TurningOnTheSpotPivotsAndSteps) {
+  FootstepState s;
+  drive(s, 10, [](int) { return 0.0f; });
+  const Trip r = drive(s, 40, [](int) { return 0.0f; }, 150.0f);  // a half turn and more in 2 s
+  EXPECT_GT(r.touchdowns, 1);
+  EXPECT_EQ(r.max_planted_drift, 0.0);
+  // At no time were both feet in the air, and they end facing the turn.
+  EXPECT_EQ(r.frames_in_flight, 0);
+  drive(s, 30, [](int) { return 0.0f; });
+  for (const FootState& f : s.feet) EXPECT_LT(std::fabs(delta_deg(f.yaw, s.heading)), 36.0f);
+}
+
+TEST(Footsteps, PlantedAnkleRollsOverItsEdges) {
+  float ax, ay, ah;
+  planted_ankle(1.0f, 2.0f, 0, 0, ax, ay, ah);
+  EXPECT_NEAR(ax, 1.0f - 0.06f, 1e-5f);  // the sole's centre is 6 cm ahead of the ankle
+  EXPECT_NEAR(ay, 2.0f, 1e-5f);
+  EXPECT_NEAR(ah, 0.08f, 1e-5f);
+  // Up on the toes: the toe edge (0.19 ahead of a level ankle) stays put, the ankle rises.
+  planted_ankle(1.0f, 2.0f, 0, -30, ax, ay, ah);
+  const float toe_x = 1.0f + 0.13f;
+  EXPECT_NEAR(std::hypot(toe_x - ax, 0.0f - ah), std::hypot(0.19f, 0.08f), 1e-4f);
+  EXPECT_GT(ah, 0.15f);
+  // Back on the heel: the heel edge stays put.
+  planted_ankle(1.0f, 2.0f, 0, 10, ax, ay, ah);
+  const float heel_x = 1.0f - 0.13f;
+  EXPECT_NEAR(std::hypot(ax - heel_x, ah), std::hypot(0.07f, 0.08f), 1e-4f);
+}
+
+}  // namespace
+}  // namespace mc::anim
