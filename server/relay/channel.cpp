@@ -194,7 +194,10 @@ void Channel::send(Audience& a, const Message& m) {
   // Home threads get one task per message for all their subscribers.
   for (auto& g : a.groups) {
     if (g->count.load() == 0) continue;
-    boost::asio::post(*g->home, [g = std::move(g), m] {
+    // The home first: the lambda's move of `g` may be evaluated before
+    // post()'s first argument (unspecified order; GCC does), leaving `g` null.
+    auto& home = *g->home;
+    boost::asio::post(home, [g = std::move(g), m] {
       g->walking = true;
       // By index, re-reading the size: a delivery may add to the list.
       for (std::size_t i = 0; i < g->list.size(); ++i) {
