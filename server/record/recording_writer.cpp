@@ -116,7 +116,13 @@ bool RecordingWriter::add_frame(std::string_view frame, std::string& error) {
       !flush(error))
     return false;
   chunk_.add_stream_frame(stream_->add(pose));
-  return true;
+  return flush_if_full(error);
+}
+
+bool RecordingWriter::flush_if_full(std::string& error) {
+  // A full chunk goes out now, not when the next frame comes: a kill then
+  // loses at most max_chunk_frames - 1 frames (19 = 0.95 s by default).
+  return chunk_.frame_count() < options_.max_chunk_frames || flush(error);
 }
 
 bool RecordingWriter::add_encoded(std::string_view frame, std::string& error) {
@@ -126,7 +132,7 @@ bool RecordingWriter::add_encoded(std::string_view frame, std::string& error) {
   // seek to it and decode from there.
   if (!chunk_.empty() && (h.keyframe || chunk_.frame_count() >= options_.max_chunk_frames) && !flush(error))
     return false;
-  return chunk_.add_frame(frame, error);
+  return chunk_.add_frame(frame, error) && flush_if_full(error);
 }
 
 bool RecordingWriter::add_control(std::string_view json_text, std::string& error) {

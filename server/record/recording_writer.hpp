@@ -2,10 +2,11 @@
 //
 // Safety: the file is only ever appended to. Frames are collected into a
 // chunk in memory and each chunk is written with one write() when the next
-// keyframe arrives (or after max_chunk_frames), then fdatasync'ed if
-// `sync` is set. A crash or SIGKILL therefore loses at most the chunk being
-// collected (one keyframe interval, 1 s by default) and never touches bytes
-// already written; the reader drops a half-written last record. A write
+// keyframe arrives or as soon as it holds max_chunk_frames, then
+// fdatasync'ed if `sync` is set. A crash or SIGKILL therefore loses at most
+// the frames of the chunk being collected (max_chunk_frames - 1: 0.95 s by
+// default) and never touches bytes already written; the reader drops a
+// half-written last record. A write
 // that fails (a full disk, a file-size limit) is cut back off the file, so
 // that what is left is whole records.
 #pragma once
@@ -77,6 +78,7 @@ class RecordingWriter {
  private:
   bool write_all(std::string_view bytes, std::string& error);
   bool add_encoded(std::string_view frame, std::string& error);
+  bool flush_if_full(std::string& error);
   int fd_ = -1;
   std::unique_ptr<proto::FrameDecoder> decoder_;  // transcoding only
   std::unique_ptr<proto::FrameEncoder> encoder_;
