@@ -57,6 +57,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   unsigned max_queue_kb = 0, stall_ms = 0;
   std::string role = "standalone", edge_games, record_at = "origin";
   std::string record_max_bytes = "2G", record_max_age = "30d";
+  unsigned header_timeout_ms = 0;
   unsigned nats_reconnect_ms = 0, origin_silence_ms = 0, edge_on_demand_ms = 0;
   std::vector<std::string> details, anim_modes;
   std::string reach_channels, mocap_dir = source_dir + "/data/mocap", mocap_cache = "mocap-cache";
@@ -105,6 +106,8 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
         "largest message a spectator may send")
     ("max-connections-per-ip", po::value(&o.relay.max_connections_per_ip)->default_value(o.relay.max_connections_per_ip),
         "connections one client address may hold, 0 = no limit")
+    ("header-timeout-ms", po::value(&header_timeout_ms)->default_value(static_cast<unsigned>(o.relay.header_timeout.count())),
+        "a request's headers (or a TLS handshake) must arrive within this time, or the connection is closed")
     ("allowed-origins", po::value(&origins), "comma-separated Origin values allowed to open the stream (default: any)")
     ("record-dir", po::value(&o.record_dir)->default_value(o.record_dir),
         "record every live channel here, one file per game, and offer the recordings for replay (empty: off)")
@@ -164,6 +167,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
     return std::nullopt;
   }
   o.relay.socket_send_buffer = static_cast<std::size_t>(send_buffer_kb) * 1024;
+  o.relay.header_timeout = std::chrono::milliseconds(std::max(100u, header_timeout_ms));
   if (!parse_byte_size(record_max_bytes, o.retention.max_bytes)) {
     message = "matchcast-server: --record-max-bytes takes a size such as 500M or 2G, not '" + record_max_bytes + "'";
     exit_code = 2;

@@ -22,7 +22,8 @@ namespace {
 std::string_view sv(beast::string_view s) { return {s.data(), s.size()}; }
 beast::string_view bsv(std::string_view s) { return {s.data(), s.size()}; }
 
-// A request must arrive whole within this time; slowloris gets nothing.
+// A response must be written within this time (a request must arrive
+// within config.header_timeout).
 constexpr auto kRequestTimeout = std::chrono::seconds(30);
 
 http::response<http::string_body> text_response(const http::request<http::string_body>& req,
@@ -70,14 +71,15 @@ Transport make_transport(net::ip::tcp::socket&& socket, const HttpContext& conte
 }
 }  // namespace
 
-HttpSession::HttpSession(net::ip::tcp::socket&& socket, const HttpContext& context)
-    : stream_(make_transport(std::move(socket), context)), context_(context) {}
+HttpSession::HttpSession(net::ip::tcp::socket&& socket, const HttpContext& context,
+                         std::unique_ptr<ConnectionLimiter::Ticket> ticket)
+    : stream_(make_transport(std::move(socket), context)), context_(context), ticket_(std::move(ticket)) {}
 
 void HttpSession::run() {
   if (!stream_.is_tls())
     return net::dispatch(stream_.get_executor(),
                          beast::bind_front_handler(&HttpSession::do_read, shared_from_this()));
-  stream_.tcp().expires_after(kRequestTimeout);
+  stream_.tcp().expires_after(context_.config.header_timeout);
   stream_.tls().async_handshake(net::ssl::stream_base::server,
                                 beast::bind_front_handler(&HttpSession::on_handshake, shared_from_this()));
 }
@@ -96,7 +98,9 @@ void HttpSession::do_read() {
   parser_.emplace();
   parser_->body_limit(context_.config.max_http_body);
   parser_->header_limit(8 * 1024);
-  stream_.tcp().expires_after(kRequestTimeout);
+  // Slow headers and half-open connections: the whole request in time, or
+  // the connection closes (an idle keep-alive connection too).
+  stream_.tcp().expires_after(context_.config.header_timeout);
   http::async_read(stream_, buffer_, *parser_,
                    beast::bind_front_handler(&HttpSession::on_read, shared_from_this()));
 }
@@ -199,15 +203,9 @@ void HttpSession::upgrade(http::request<http::string_body>&& req) {
     channel = name.empty() ? context_.channels.default_channel() : context_.channels.find_or_request(name);
     if (!channel) return send(text_response(req, http::status::not_found, "no such channel\n"));
   }
-  beast::error_code ec;
-  const auto peer = stream_.tcp().socket().remote_endpoint(ec);
-  auto ticket = ec ? nullptr : context_.limiter->acquire(peer.address());
-  if (!ticket) {
-    if (replay) replay->close();
-    if (ec) return;
-    ++context_.stats.refused_per_ip;
-    return send(text_response(req, http::status::too_many_requests, "too many connections from your address\n"));
-  }
+  // The connection's per-address slot, taken when it was accepted, goes
+  // with it to the WebSocket session.
+  auto ticket = std::move(ticket_);
   // Beast has parsed the request; from here the session runs the
   // connection itself on the bare socket (or the TLS stream).
   stream_.tcp().expires_never();

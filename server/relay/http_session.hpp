@@ -38,7 +38,10 @@ std::string query_param(std::string_view target, std::string_view key);
 
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
-  HttpSession(boost::asio::ip::tcp::socket&& socket, const HttpContext& context);
+  // `ticket`: the connection's per-address slot (connection_limiter), held
+  // until it ends, by this session or the WebSocket session it becomes.
+  HttpSession(boost::asio::ip::tcp::socket&& socket, const HttpContext& context,
+              std::unique_ptr<ConnectionLimiter::Ticket> ticket);
   void run();
 
  private:
@@ -57,6 +60,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   const HttpContext& context_;
   std::optional<boost::beast::http::request_parser<boost::beast::http::string_body>> parser_;
   std::shared_ptr<void> response_;  // keeps the response alive during the write
+  std::unique_ptr<ConnectionLimiter::Ticket> ticket_;
 };
 
 }  // namespace mc::relay

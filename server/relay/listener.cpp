@@ -48,6 +48,19 @@ void Listener::do_accept() {
                          beast::bind_front_handler(&Listener::on_accept, shared_from_this()));
 }
 
+void Listener::refuse(net::ip::tcp::socket& socket) {
+  // One non-blocking write into the fresh socket's empty buffer, then close:
+  // a refusal costs no session, no timer and no wait.
+  static constexpr std::string_view kTooMany =
+      "HTTP/1.1 429 Too Many Requests\r\nServer: matchcast\r\nContent-Type: text/plain; charset=utf-8\r\n"
+      "Content-Length: 39\r\nConnection: close\r\n\r\ntoo many connections from your address\n";
+  beast::error_code ignored;
+  socket.non_blocking(true, ignored);
+  socket.write_some(net::buffer(kTooMany.data(), kTooMany.size()), ignored);
+  socket.shutdown(net::ip::tcp::socket::shutdown_send, ignored);
+  socket.close(ignored);
+}
+
 void Listener::on_accept(beast::error_code ec, net::ip::tcp::socket socket) {
   if (ec == net::error::operation_aborted) return;  // closed
   if (ec) {
@@ -63,7 +76,19 @@ void Listener::on_accept(beast::error_code ec, net::ip::tcp::socket socket) {
       socket.set_option(net::socket_base::send_buffer_size(static_cast<int>(context_.config.socket_send_buffer)),
                         ignored);
     }
-    std::make_shared<HttpSession>(std::move(socket), context_)->run();
+    // Every connection takes its address's slot at once, before it has
+    // said anything: a host that opens many (slow headers, half-open
+    // sockets, a flood of upgrades) is refused past the limit, and other
+    // addresses are not affected.
+    beast::error_code peer_ec;
+    const auto peer = socket.remote_endpoint(peer_ec);
+    auto ticket = peer_ec ? nullptr : context_.limiter->acquire(peer.address());
+    if (!ticket) {
+      if (!peer_ec) ++context_.stats.refused_per_ip;
+      refuse(socket);
+    } else {
+      std::make_shared<HttpSession>(std::move(socket), context_, std::move(ticket))->run();
+    }
   }
   do_accept();
 }

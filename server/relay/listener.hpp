@@ -26,6 +26,8 @@ class Listener : public std::enable_shared_from_this<Listener> {
  private:
   void do_accept();
   void on_accept(boost::beast::error_code ec, boost::asio::ip::tcp::socket socket);
+  // Answers 429 and closes: the address holds max_connections_per_ip.
+  void refuse(boost::asio::ip::tcp::socket& socket);
 
   std::vector<boost::asio::io_context*> threads_;
   std::size_t next_ = 0;

@@ -41,6 +41,13 @@ struct RelayConfig {
   // Connections one client address may hold (0 = no limit). A household
   // behind one NAT has a few spectators, not hundreds.
   std::size_t max_connections_per_ip = 64;
+  // The headers (and small body) of a request, and a TLS handshake, must
+  // arrive whole within this time, or the connection is closed: a client
+  // that sends a byte a second (slowloris) or nothing at all (a half-open
+  // connection) holds its slot for at most this long. Counted per
+  // connection, and every connection, HTTP or WebSocket, counts against
+  // max_connections_per_ip from the moment it is accepted.
+  std::chrono::milliseconds header_timeout{10000};
 
   // If not empty, a WebSocket upgrade must carry one of these Origin
   // headers ("https://example.org"); others get 403. Empty = any origin.

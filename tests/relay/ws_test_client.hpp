@@ -20,8 +20,15 @@ struct Received {
 
 class WsTestClient {
  public:
-  explicit WsTestClient(std::uint16_t port, const std::string& target = "/ws") : ws_(ioc_) {
+  // `source`: the local address to connect from ("127.0.0.2" is another
+  // client address on loopback); empty = the system's choice.
+  explicit WsTestClient(std::uint16_t port, const std::string& target = "/ws", const std::string& source = "")
+      : ws_(ioc_) {
     boost::asio::ip::tcp::endpoint ep(boost::asio::ip::make_address("127.0.0.1"), port);
+    if (!source.empty()) {
+      ws_.next_layer().open(boost::asio::ip::tcp::v4());
+      ws_.next_layer().bind({boost::asio::ip::make_address(source), 0});
+    }
     ws_.next_layer().connect(ep);
     ws_.handshake("127.0.0.1", target);
   }
