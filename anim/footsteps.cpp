@@ -45,13 +45,14 @@ void root_at(const FootstepInput& in, float t, float& x, float& y) {
   y = py + vy * rest;
 }
 
-// The horizontal ease of a swing: still for its first 8 % (the foot rises
-// before it travels), then speeding up, cruising and slowing down to a stop
-// over the last third (the foot comes down with hardly any speed over the
-// grass: the body catches up with it).
-float swing_ease(float u) {
-  constexpr float a = 0.08f, r1 = 0.2f, r2 = 0.4f;
-  constexpr float area = 1.0f - 0.5f * r1 - 0.5f * r2;
+// The horizontal ease of a swing: still for its first few percent (the
+// foot rises before it travels), then speeding up, cruising and slowing down
+// to a stop over the last 40 % (it comes down with hardly any speed over the
+// grass: the body catches up with it). A runner's foot gets going sooner,
+// or the body would leave it far behind.
+float swing_ease(float u, float run) {
+  const float a = 0.08f - 0.04f * run, r1 = 0.2f - 0.1f * run, r2 = 0.4f;
+  const float area = 1.0f - 0.5f * r1 - 0.5f * r2;
   const float w = clampf((u - a) / (1.0f - a), 0.0f, 1.0f);
   if (w < r1) return 0.5f * w * w / r1 / area;
   if (w < 1.0f - r2) return (0.5f * r1 + (w - r1)) / area;
@@ -121,7 +122,7 @@ void swing_ankle(const FootState& f, float run, float& x, float& y, float& h, fl
   // A steep approach: in the second half of the swing, the further it still
   // has to go, the higher it stays (up to the swing's own height), so that
   // it never travels low over the grass.
-  if (f.u > 0.5f) h = std::max(h, bh + std::min(kApproachSlope * pm::hypot(bx - x, by - y), f.lift));
+  if (f.u > 0.5f) h = std::max(h, bh + std::min(kApproachSlope * pm::hypot(bx - x, by - y), std::min(f.lift, 0.1f)));
   yaw = lerp_deg(f.ayaw, f.byaw, v);
   // The toes come level early in the swing and meet the landing's pitch at its end.
   pitch = f.apitch * (1.0f - smoothstep(f.u / 0.4f)) + f.bpitch * smoothstep((f.u - 0.6f) / 0.4f);
@@ -304,7 +305,10 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
         phase_left = 0.5f;
       }
       if (go) {
-        const float lift_m = s.moving ? 0.09f + 0.20f * s.run * clampf((s.speed - 2.0f) / 6.0f, 0.2f, 1.0f) : 0.07f;
+        // Walking feet clear the grass; a sprinter's heel comes up behind to
+        // half a metre (the swing's early peak, swing_bump).
+        const float lift_m =
+            s.moving ? 0.09f + 0.30f * s.run * clampf((std::min(s.speed, v_path) - 2.0f) / 6.0f, 0.0f, 1.0f) : 0.07f;
         lift(f, phase_left, lift_m);
         // This frame's share of the swing.
         f.u = 0;
@@ -364,7 +368,7 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
     {
       float tx, ty, th;
       planted_ankle(f.bx, f.by, f.byaw, f.bpitch, tx, ty, th);
-      const float w0 = swing_ease(u0), w1 = swing_ease(f.u);
+      const float w0 = swing_ease(u0, s.run), w1 = swing_ease(f.u, s.run);
       const float frac = w0 < 0.9999f ? (w1 - w0) / (1.0f - w0) : 1.0f;
       float dx = (tx - f.cx) * frac, dy = (ty - f.cy) * frac;
       const float dn = pm::hypot(dx, dy);

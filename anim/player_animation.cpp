@@ -18,7 +18,7 @@
 namespace mc::anim {
 namespace {
 
-const std::string kYzx = "yzx";
+const std::string kYzx = "yzx", kZxy = "zxy", kZ = "z", kZx = "zx";
 // Hip -> ankle at which a leg keeps a soft knee (the IK softens from 99.5 %).
 constexpr float kLegReach = 0.985f * (dims::kThigh + dims::kShin);
 constexpr float kMinPelvis = 0.62f;
@@ -170,6 +170,54 @@ void touch_ball(const SkeletonDef& skel, const BodyFrame& body, float& pelvis_h,
     if (low >= -0.002f) break;
     legs.feet[k].ankle_ms[1] -= low;
     solve();
+  }
+}
+
+// Closest distance between segments p1q1 and p2q2 (Ericson, Real-Time
+// Collision Detection, 5.1.9).
+float segment_distance(glm::vec3 p1, glm::vec3 q1, glm::vec3 p2, glm::vec3 q2) {
+  const glm::vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+  const float c = glm::dot(d1, r), b = glm::dot(d1, d2), denom = a * e - b * b;
+  float s = denom > 1e-9f ? clampf((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
+  float t = e > 1e-9f ? (b * s + f) / e : 0.0f;
+  if (t < 0) { t = 0; s = a > 1e-9f ? clampf(-c / a, 0.0f, 1.0f) : 0.0f; }
+  else if (t > 1) { t = 1; s = a > 1e-9f ? clampf((b - c) / a, 0.0f, 1.0f) : 0.0f; }
+  return glm::length((p1 + d1 * s) - (p2 + d2 * t));
+}
+
+// Legs keep out of each other: the thighs' and the shins' centre lines
+// (capsules of the boxes' half widths, plus a margin for the stream's
+// quantization) stay apart. A leg in the air is turned out at the hip
+// (abduction) until they are; planted legs are left as they stand.
+void separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]) {
+  constexpr float kThighGap = 0.07f + 0.015f, kShinGap = 0.05f + 0.015f, kFootGap = 0.05f + 0.015f;
+  const glm::mat3 pelvis = joint_rotation(kYzx, &a[dof::kPelvis]);
+  for (int it = 0; it < 3; ++it) {
+    glm::vec3 hip[2], knee[2], ankle[2], heel[2], toe[2];
+    for (int i = 0; i < 2; ++i) {
+      const int h = i == 0 ? dof::kRHip : dof::kLHip;
+      const glm::mat3 thigh = pelvis * joint_rotation(kZxy, &a[static_cast<std::size_t>(h)]);
+      const glm::mat3 shin = thigh * joint_rotation(kZ, &a[static_cast<std::size_t>(h + 3)]);
+      const glm::mat3 foot = shin * joint_rotation(kZx, &a[static_cast<std::size_t>(h + 4)]);
+      hip[i] = glm::vec3(0, pelvis_h, 0) +
+               pelvis * glm::vec3(0, -dims::kHipDrop, i == 0 ? dims::kHipHalfWidth : -dims::kHipHalfWidth);
+      knee[i] = hip[i] + thigh * glm::vec3(0, -dims::kThigh, 0);
+      ankle[i] = knee[i] + shin * glm::vec3(0, -dims::kShin, 0);
+      heel[i] = ankle[i] + foot * glm::vec3(-dims::kFootBack, -0.5f * dims::kAnkleHeight, 0);
+      toe[i] = ankle[i] + foot * glm::vec3(dims::kFootFront, -0.5f * dims::kAnkleHeight, 0);
+    }
+    const float thighs = segment_distance(hip[0], knee[0], hip[1], knee[1]);
+    const float shins = segment_distance(knee[0], ankle[0], knee[1], ankle[1]);
+    const float feet = segment_distance(heel[0], toe[0], heel[1], toe[1]);
+    const float need = std::max({(kThighGap - thighs) / 0.3f, (kShinGap - shins) / 0.65f,
+                                 (kFootGap - feet) / 0.85f});  // rad of abduction
+    if (need <= 0) return;
+    const int i = !planted[0] ? 0 : !planted[1] ? 1 : -1;
+    if (i < 0) return;
+    const int h = i == 0 ? dof::kRHip : dof::kLHip;
+    const float turn = std::min(need / kDeg + 1.0f, 25.0f);
+    a[static_cast<std::size_t>(h + 1)] += i == 0 ? -turn : turn;  // right abducts towards -X, left towards +X
   }
 }
 
@@ -344,6 +392,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     again = true;
   }
   if (again) legs.Run();
+  if (own_feet) separate_legs(a, pelvis_h, lo.planted);
   // An ankle never rests against its limits: a joint held at its stop looks
   // locked (issue 23). In the air the sole only tilts a little further.
   for (int i = 0; i < 2; ++i) {

@@ -5,17 +5,22 @@
 // and run.
 //
 //   matchcast-anim-quality [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR]
-//                          [--png FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...
+//                          [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N]
+//                          [--detail none|run|kick|full] LOG...
 //
 // --mode mocap takes the kicks and slow walking from the CMU clips
 // (anim/motion_source.hpp; the motion graph is cached in --mocap-cache);
 // --compare animates each log in both modes and prints the metrics side by
 // side (the picture then shows the mocap mode). --draw-rate: the clients'
 // drawing rate measured beside the 20 Hz frames (a multiple of 20, default 60).
+// --contact-sheet: the close-up contact sheet of the first log (a sprint, a
+// kick, a turn, every frame of a second, contact_sheet.hpp), default
+// test-output/anim/contact-sheet.png.
 //
 // Exit status 0 when every target holds on every log, 1 otherwise, 2 on bad
 // arguments or unreadable logs.
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -24,6 +29,7 @@
 #include "anim/human_skeleton.hpp"
 #include "anim/mocap/io/motion_source_files.hpp"
 #include "anim/tools/close_up_metrics.hpp"
+#include "anim/tools/contact_sheet.hpp"
 #include "anim/tools/metrics.hpp"
 #include "anim/tools/mode_compare.hpp"
 #include "anim/tools/strip_plot.hpp"
@@ -140,9 +146,11 @@ int main(int argc, char** argv) {
   std::string mode = "keyframe", mocap_dir = MATCHCAST_DEFAULT_MOCAP_DIR, mocap_cache = MATCHCAST_DEFAULT_MOCAP_CACHE;
   bool compare = false;
   int draw_rate = 60;
+  std::string sheet = "test-output/anim/contact-sheet.png";
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--png" && i + 1 < argc) png = argv[++i];
+    else if (arg == "--contact-sheet" && i + 1 < argc) sheet = argv[++i];
     else if (arg == "--draw-rate" && i + 1 < argc) draw_rate = std::atoi(argv[++i]);
     else if (arg == "--lookahead" && i + 1 < argc) cfg.lookahead_cycles = std::atoi(argv[++i]);
     else if (arg == "--mode" && i + 1 < argc && (std::string(argv[i + 1]) == "keyframe" || std::string(argv[i + 1]) == "mocap"))
@@ -158,7 +166,7 @@ int main(int argc, char** argv) {
       }
       cfg.detail = *d;
     } else if (!arg.empty() && arg[0] == '-') {
-      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
       return 2;
     } else {
       logs.push_back(arg);
@@ -169,7 +177,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (logs.empty()) {
-    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
     return 2;
   }
   // Mocap mode: the caller loads the clips, the animator stays pure.
@@ -198,6 +206,18 @@ int main(int argc, char** argv) {
       if (!view_stream(human_skeleton(), x.params, x.frames, x.events, view, err)) {
         std::fprintf(stderr, "%s: the stream does not decode: %s\n", log.c_str(), err.c_str());
         return false;
+      }
+      if (!sheet.empty()) {
+        ContactSheetRows rows;
+        std::error_code ec;
+        const std::filesystem::path dir = std::filesystem::path(sheet).parent_path();
+        if (!dir.empty()) std::filesystem::create_directories(dir, ec);
+        if (write_contact_sheet(view, sheet, rows, err))
+          std::printf("contact sheet: %s (sprint from %s; kick from %s, contact in cell 10; turn from %s)\n",
+                      sheet.c_str(), rows.sprint.c_str(), rows.kick.c_str(), rows.turn.c_str());
+        else
+          std::fprintf(stderr, "contact sheet: %s\n", err.c_str());
+        sheet.clear();  // the first log's
       }
       const CloseUpReport r20 = measure_close_up(view, x.states, x.frames, 1);
       const CloseUpReport rd = measure_close_up(view, x.states, x.frames, draw_rate / 20);
