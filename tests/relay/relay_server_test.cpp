@@ -150,9 +150,10 @@ TEST_F(RelayServerTest, LateJoinerGetsTheLatestTeamsAndScoreRightAfterTheHello) 
 }
 
 TEST_F(RelayServerTest, StalledClientNeverDelaysOthersAndIsClosed) {
-  // Room for ~8 frames: a healthy reader descheduled for a few ms on a busy
-  // machine keeps up; the stalled one (9.6 MB behind) cannot.
-  config_.max_queue_bytes = 256 * 1024;
+  // Room for ~32 frames (~64 ms of this burst): a healthy reader
+  // descheduled on a busy machine keeps up; the stalled one (9.6 MB behind)
+  // cannot.
+  config_.max_queue_bytes = 1024 * 1024;
   config_.stall_timeout = std::chrono::milliseconds(300);
   start();
   WsTestClient stalled(server_->port());  // never reads again
