@@ -59,6 +59,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   std::string record_max_bytes = "2G", record_max_age = "30d";
   unsigned header_timeout_ms = 0;
   unsigned nats_reconnect_ms = 0, origin_silence_ms = 0, edge_on_demand_ms = 0;
+  bool nats_in_order = false;
   std::vector<std::string> details, anim_modes;
   std::string reach_channels, mocap_dir = source_dir + "/data/mocap", mocap_cache = "mocap-cache";
   po::options_description desc(
@@ -127,6 +128,8 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
         "edge (serve games from NATS, no feeds) or both")
     ("nats-url", po::value(&o.nats.url)->default_value(o.nats.url),
         "NATS server(s), comma-separated (origin/edge/both)")
+    ("nats-in-order", po::bool_switch(&nats_in_order),
+        "connect to the --nats-url servers in the order listed, falling back to the next (default: random order)")
     ("nats-subject-prefix", po::value(&o.nats.subject_prefix)->default_value(o.nats.subject_prefix),
         "subjects <prefix>.<game>.live/.key, stream <PREFIX>_KEY")
     ("edge-games", po::value(&edge_games),
@@ -216,6 +219,7 @@ std::optional<ServerOptions> parse_server_options(int argc, const char* const ar
   o.nats.reconnect_wait = std::chrono::milliseconds(std::max(50u, nats_reconnect_ms));
   o.nats.origin_silence = std::chrono::milliseconds(std::max(200u, origin_silence_ms));
   o.nats.on_demand_wait = std::chrono::milliseconds(edge_on_demand_ms);
+  o.nats.randomize_servers = !nats_in_order;
   for (std::size_t pos = 0; pos < edge_games.size();) {
     auto comma = edge_games.find(',', pos);
     if (comma == std::string::npos) comma = edge_games.size();

@@ -27,6 +27,9 @@ struct NatsConfig {
   // One URL or a comma-separated list (the cluster's nodes); the client
   // fails over between them and learns the others from the cluster.
   std::string url = "nats://127.0.0.1:4222";
+  // Try the servers of `url` in random order (the client's default, which
+  // spreads edges over the nodes), or in the order listed.
+  bool randomize_servers = true;
   // Subjects are <prefix>.<game>.live and <prefix>.<game>.key; the stream
   // holding the latest keyframes is <PREFIX>_KEY. One prefix per deployment.
   std::string subject_prefix = "matchcast";

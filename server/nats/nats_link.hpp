@@ -75,6 +75,7 @@ class NatsLink {
   // least one message stored: nats-server 2.9 crashes on a message-get
   // that reaches a stream still being created (server/nats/README.md, "The
   // broker crash"). NotFound: no such stream, or nothing stored yet.
+  // Failed within 0.5 s when the cluster does not answer.
   Fetch last_message(const std::string& stream, const std::string& subject, std::string& out, std::string& error);
 
  private:

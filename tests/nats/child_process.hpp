@@ -1,13 +1,13 @@
-// A child process for the NATS tests (nats-server, matchcast-server): spawned
+// A child process for the NATS tests (nats-server, matchcast-server): started
 // with its stdout on a pipe (to read "Matchcast: open http://HOST:PORT/")
-// and its stderr in a log file, stopped by signal, always reaped. Every wait
-// is bounded.
+// and its stderr in a log file, stopped by signal, always reaped, and killed
+// with the test process if that dies first. Every wait is bounded.
 #pragma once
 
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -26,21 +26,45 @@ class ChildProcess {
   ChildProcess& operator=(const ChildProcess&) = delete;
   ~ChildProcess() { stop(SIGKILL); }
 
-  // False when the program cannot be started.
-  bool start(const std::vector<std::string>& argv, const std::string& stderr_path) {
+  // False when the program cannot be started. `env`: NAME=VALUE pairs set
+  // on top of this process's environment.
+  bool start(const std::vector<std::string>& argv, const std::string& stderr_path,
+             const std::vector<std::string>& env = {}) {
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) return false;
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_adddup2(&fa, fds[1], STDOUT_FILENO);
-    posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, stderr_path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+    const int err = ::open(stderr_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
     std::vector<char*> args;
     for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
-    const int rc = ::posix_spawn(&pid_, args[0], &fa, nullptr, args.data(), environ);
-    posix_spawn_file_actions_destroy(&fa);
+    std::vector<std::string> env_strings;
+    for (char** e = environ; *e; ++e) {
+      const std::string one = *e;
+      const auto name = one.substr(0, one.find('=') + 1);
+      bool replaced = false;
+      for (const auto& x : env) replaced = replaced || x.rfind(name, 0) == 0;
+      if (!replaced) env_strings.push_back(one);
+    }
+    env_strings.insert(env_strings.end(), env.begin(), env.end());
+    std::vector<char*> envp;
+    for (auto& e : env_strings) envp.push_back(e.data());
+    envp.push_back(nullptr);
+    // fork + exec rather than posix_spawn: the child asks to be killed when
+    // the test process dies, so a test killed by ctest's timeout leaves no
+    // nats-server or matchcast-server behind. Only async-signal-safe calls
+    // between fork and exec.
+    const pid_t parent = ::getpid();
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (::getppid() != parent) ::_exit(127);
+      ::dup2(fds[1], STDOUT_FILENO);
+      if (err >= 0) ::dup2(err, STDERR_FILENO);
+      ::execve(args[0], args.data(), envp.data());
+      ::_exit(127);
+    }
     ::close(fds[1]);
-    if (rc != 0) {
+    if (err >= 0) ::close(err);
+    if (pid_ < 0) {
       ::close(fds[0]);
       pid_ = -1;
       return false;

@@ -69,6 +69,17 @@ TEST(NatsOptions, RecordingHappensOnceWhereRecordAtSays) {
   EXPECT_EQ(both->nats.stream_replicas, 3);
 }
 
+TEST(NatsOptions, OnDemandWaitAndServerOrder) {
+  const auto plain = parse({"--role", "edge"});
+  ASSERT_TRUE(plain);
+  EXPECT_EQ(plain->nats.on_demand_wait.count(), 5000);
+  EXPECT_TRUE(plain->nats.randomize_servers);
+  const auto o = parse({"--role", "edge", "--edge-on-demand-ms", "0", "--nats-in-order"});
+  ASSERT_TRUE(o);
+  EXPECT_EQ(o->nats.on_demand_wait.count(), 0);  // no subscription on demand
+  EXPECT_FALSE(o->nats.randomize_servers);
+}
+
 TEST(NatsOptions, BadValuesAreRefusedWithAReason) {
   std::string m;
   EXPECT_FALSE(parse({"--role", "relay"}, &m));

@@ -41,12 +41,12 @@ inline bool port_open(std::uint16_t port) {
 }
 
 // matchcast-server's arguments for a test: port 0, one I/O thread, the
-// given NATS URL, reconnects every 200 ms; then `extra`.
+// given NATS URL, reconnects every `reconnect_ms`; then `extra`.
 inline std::vector<std::string> matchcast_argv(const std::string& nats_url, const std::string& record_dir,
-                                               const std::vector<std::string>& extra) {
+                                               const std::vector<std::string>& extra, int reconnect_ms = 200) {
   std::vector<std::string> argv = {MATCHCAST_SERVER, "--port", "0", "--record-dir", record_dir, "--threads", "1",
                                    "--web", std::string(MATCHCAST_SOURCE_DIR) + "/web", "--nats-url", nats_url,
-                                   "--nats-reconnect-wait-ms", "200"};
+                                   "--nats-reconnect-wait-ms", std::to_string(reconnect_ms)};
   argv.insert(argv.end(), extra.begin(), extra.end());
   return argv;
 }

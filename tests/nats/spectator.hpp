@@ -28,6 +28,63 @@ struct Frame {
   Clock::time_point at;
 };
 
+// A WebSocket client like tests/relay's WsTestClient, whose connect and
+// handshake are bounded too: a server that never answers the upgrade fails
+// the test instead of hanging it.
+class BoundedWsClient {
+ public:
+  BoundedWsClient(std::uint16_t port, const std::string& target, std::chrono::milliseconds timeout = 10s)
+      : ws_(ioc_) {
+    const boost::asio::ip::tcp::endpoint ep(boost::asio::ip::make_address("127.0.0.1"), port);
+    boost::system::error_code result = boost::asio::error::timed_out;
+    bool done = false;
+    ws_.next_layer().async_connect(ep, [&](boost::system::error_code ec) {
+      if (ec) {
+        result = ec;
+        done = true;
+        return;
+      }
+      ws_.async_handshake("127.0.0.1", target, [&](boost::system::error_code ec2) {
+        result = ec2;
+        done = true;
+      });
+    });
+    ioc_.run_for(timeout);
+    if (!done) abandon();
+    if (result) throw boost::system::system_error(result);
+  }
+  // One message; throws on close, or timed_out after `timeout`.
+  mc::relay::testing::Received read(std::chrono::milliseconds timeout) {
+    boost::beast::flat_buffer buf;
+    boost::system::error_code result = boost::asio::error::timed_out;
+    bool done = false;
+    ws_.async_read(buf, [&](boost::system::error_code ec, std::size_t) {
+      result = ec;
+      done = true;
+    });
+    ioc_.restart();
+    ioc_.run_for(timeout);
+    if (!done) {
+      abandon();
+      throw boost::system::system_error(boost::asio::error::timed_out);
+    }
+    if (result) throw boost::system::system_error(result);
+    return {ws_.got_binary(), boost::beast::buffers_to_string(buf.data())};
+  }
+  boost::beast::websocket::stream<boost::asio::ip::tcp::socket>& stream() { return ws_; }
+
+ private:
+  // Ends an operation that did not complete: the connection is unusable.
+  void abandon() {
+    boost::system::error_code ignored;
+    ws_.next_layer().close(ignored);
+    ioc_.restart();
+    ioc_.run_for(std::chrono::seconds(1));
+  }
+  boost::asio::io_context ioc_;
+  boost::beast::websocket::stream<boost::asio::ip::tcp::socket> ws_;
+};
+
 // One spectator reading on its own thread until the connection ends.
 class Spectator {
  public:
@@ -104,7 +161,7 @@ class Spectator {
   }
 
  private:
-  mc::relay::testing::WsTestClient client_;
+  BoundedWsClient client_;
   std::thread thread_;
   std::mutex mutex_;
   std::vector<Frame> frames_;
