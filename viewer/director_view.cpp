@@ -90,8 +90,8 @@ ShotRig shot_rig(const proto::DirectorCue& cue, std::optional<proto::ReplayAngle
       } else if (a == proto::ReplayAngle::High) {
         r = {S(bx, 38, halfW + 45), S(bx, 0, by * 0.5f), 34.0f};
       } else {
-        r = {S(gx + g * 8, 5.5f, std::clamp(by * 0.35f, -8.0f, 8.0f)), S(bx + (gx - bx) * 0.3f, 0.5f, by * 0.65f),
-             portrait ? 62.0f : 50.0f};
+        const float out = std::clamp(std::fabs(bx - gx) * 0.6f, 14.0f, 40.0f);
+        r = {S(gx + g * 9, 9, std::clamp(by * 0.25f, -6.0f, 6.0f)), S(gx - g * out, 0, by * 0.5f), portrait ? 66.0f : 55.0f};
       }
       break;
     }

@@ -61,7 +61,7 @@ TEST(DirectorView, TheShotsAreThePages) {
   expect_rig(shot_rig(sc, std::nullopt, f, field, aspect), {13.2111f, 1.8f, -6.4223f}, {15, 1.1f, -10}, 32);
   f.ball = {-40, -6, 0};
   const DirectorCue rp = cue(0, Shot::Replay, Side::Right, Side::Left);
-  expect_rig(shot_rig(rp, proto::ReplayAngle::BehindGoal, f, field, aspect), {-60.5f, 5.5f, -2.1f}, {-43.75f, 0.5f, -3.9f}, 50);
+  expect_rig(shot_rig(rp, proto::ReplayAngle::BehindGoal, f, field, aspect), {-61.5f, 9, -1.5f}, {-38.5f, 0, -3}, 55);
   expect_rig(shot_rig(rp, proto::ReplayAngle::LowSide, f, field, aspect), {-37, 1.3f, 37}, {-40, 0.6f, -6}, 23.643f);
 }
 

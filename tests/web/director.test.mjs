@@ -4,7 +4,8 @@
 // and follows play without shaking; at the goal it shows the scorer, then
 // the replay from two angles under a "REPLAY" mark, then catches up with
 // live. A manual camera overrides the director, which comes back on
-// request. Screenshots of each shot go to $MATCHCAST_OUTPUT_DIR.
+// request. The bodies up close, stereo side by side, the VR button.
+// Screenshots of each shot go to $MATCHCAST_OUTPUT_DIR.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launchBrowser, shot, startServer, stats, waitFor } from './harness.mjs';
@@ -133,15 +134,22 @@ describe('the director on the page', { timeout: 240000 }, () => {
     assert.ok(markSeen.box.width > 20 && markSeen.box.height > 10, 'and visible');
     assert.equal(d.segments, 2);
     assert.equal(d.mark, false, 'the mark is gone after the replay');
-    // Scorer 3 s + replay 12 s of game time (6 s + 3.5 s at 0.6x), paced by the clock.
+    // Scorer 3 s + replay 12 s of game time (6 s + 3.5 s at 0.6x), paced by
+    // the clock; each of the four changes is seen at the next picture, which
+    // a software renderer on a loaded machine draws up to a second later.
+    const slack = 4 * (1000 / Math.max(1, (await stats(page)).fps)) / 1000 * SPEED;
+    const replay = (d.log[i + 3].at - d.log[i + 1].at) / 1000 * SPEED;
     const back = (d.log[i + 3].at - d.log[i].at) / 1000 * SPEED;
-    assert.ok(back > 12 && back < 17, `back to live ${back.toFixed(1)} s (game time) after the scorer shot`);
+    assert.ok(replay > 11 && replay < 12 + slack, `the replay took ${replay.toFixed(1)} s of game time`);
+    assert.ok(back < 15 + slack, `back to live ${back.toFixed(1)} s (game time) after the scorer shot`);
     await snap('after-replay');
     // Catching up: the time shift closes on live.
-    await waitFor(page, async () => !(await stats(page)).timeshift.active, 'caught up with live', 30000, 200);
+    await waitFor(page, async () => {
+      const s = await stats(page);
+      return !s.timeshift.active && s.director.phase === 'live';
+    }, 'caught up with live', 30000, 200);
     const end = await director();
-    assert.equal(end.phase, 'live');
-    assert.equal(end.replays, 1);
+    assert.ok(end.replays >= 1, 'the goal was replayed (the second goal, 14 s later, may be too)');
     await snap('live-again');
   });
 
@@ -171,11 +179,13 @@ describe('the director on the page', { timeout: 240000 }, () => {
     // The top-down view: every player is far.
     await page.keyboard.press('7');
     await waitFor(page, async () => (await stats(page)).camera === 'top', 'top-down', 5000);
-    await page.waitForTimeout(500);
+    // A few pictures from up there: the levels are chosen as a picture is drawn.
+    const r0 = (await stats(page)).rendered;
+    await waitFor(page, async () => (await stats(page)).rendered > r0 + 2, 'pictures from above', 20000);
     const top = await waitFor(page, async () => {
       const b = (await stats(page)).bodies;
-      return b && b.far + b.near === 22 ? b : null;
-    }, '22 bodies', 10000);
+      return b && b.far + b.near === 22 && b.far >= 20 ? b : null;
+    }, '22 bodies, far from the camera', 10000);
     assert.equal(top.boxes, 0, 'skinned bodies, not boxes');
     assert.ok(top.far >= 20, `far players use the low level: ${JSON.stringify(top)}`);
     // Beside the player nearest the ball, a few moments apart.
@@ -189,6 +199,106 @@ describe('the director on the page', { timeout: 240000 }, () => {
     const near = (await stats(page)).bodies;
     assert.ok(near.near >= 1, `the player beside the camera at the high level: ${JSON.stringify(near)}`);
     await page.keyboard.press('0');
+    assert.deepEqual(errors, []);
+  });
+
+  // Left and right halves of a screenshot, compared in the page (a 2D canvas
+  // decodes the PNG): how much of each is grass, and how many pixels differ
+  // between them.
+  const halves = (png) => page.evaluate(async (b64) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    const w = Math.floor(img.width / 2), h = Math.floor(img.height * 0.7);   // above the controls
+    const L = g.getImageData(0, 0, w, h).data, R = g.getImageData(w, 0, w, h).data;
+    let grassL = 0, grassR = 0, differ = 0;
+    const grass = (d, i) => d[i + 1] > 90 && d[i + 1] > d[i] * 1.2 && d[i + 1] > d[i + 2] * 1.2;
+    for (let i = 0; i < L.length; i += 4) {
+      if (grass(L, i)) grassL++;
+      if (grass(R, i)) grassR++;
+      if (Math.abs(L[i] - R[i]) + Math.abs(L[i + 1] - R[i + 1]) + Math.abs(L[i + 2] - R[i + 2]) > 30) differ++;
+    }
+    const n = L.length / 4;
+    return { grassL: grassL / n, grassR: grassR / n, differ: differ / n };
+  }, png.toString('base64'));
+
+  test('a spectator who joins late rewinds through the relay: to a goal before he came, to the kick-off, back to live', async () => {
+    const late = await browser.newPage({ viewport: { width: 640, height: 360 } });
+    const lateErrors = [];
+    late.on('pageerror', (e) => lateErrors.push(e.message));
+    await late.goto(`${server.url}?fixed-quality&aa=0&shadows=0`);   // a second page: as light as it gets
+    const s0 = await waitFor(late, async () => {
+      const s = await stats(late);
+      return s?.serverShift?.firstLive > 50 && s.timeshift.last > 60 ? s : null;
+    }, 'live frames', 30000);
+    // The previous goal is before this page's history: the relay's recording has it.
+    await late.keyboard.press('g');
+    const g = await waitFor(late, async () => {
+      const s = await stats(late);
+      return s.serverShift.mode === 'replay' && s.serverShift.time !== null && s.serverShift.time < s0.serverShift.firstLive ? s : null;
+    }, 'the relay\'s replay of an earlier goal', 30000);
+    assert.ok(g.serverShift.time < s0.serverShift.firstLive,
+      `at cycle ${g.serverShift.time}, before the page joined (${s0.serverShift.firstLive})`);
+    await late.screenshot({ path: shot('timeshift-server-goal') });
+    await late.keyboard.press('l');
+    await waitFor(late, async () => (await stats(late)).serverShift.mode === 'live', 'back to live', 20000);
+    // The bar's left end: the kick-off.
+    await late.$eval('#rp-seek', (e) => { e.value = '0'; e.dispatchEvent(new Event('input', { bubbles: true })); });
+    const k = await waitFor(late, async () => {
+      const s = await stats(late);
+      return s.serverShift.mode === 'replay' && s.serverShift.time !== null && s.serverShift.time < 60 ? s : null;
+    }, 'the kick-off from the relay', 30000);
+    assert.ok(k.serverShift.time < 60, `at cycle ${k.serverShift.time}`);
+    await late.keyboard.press('l');
+    await waitFor(late, async () => (await stats(late)).serverShift.mode === 'live', 'live again', 20000);
+    assert.deepEqual(lateErrors, []);
+    await late.close();
+  });
+
+  test('side-by-side stereo draws two views; a VR button appears where the browser offers immersive-vr', async () => {
+    await page.keyboard.press('1');   // a steady camera for the comparison
+    await waitFor(page, async () => (await stats(page)).camera === 'broadcast', 'broadcast', 5000);
+    await page.waitForTimeout(600);
+    const mono = await halves(await page.screenshot());
+    await page.keyboard.press('v');
+    await waitFor(page, async () => (await stats(page)).stereo.views === 2, 'two views', 5000);
+    assert.equal((await stats(page)).stereo.mode, 'side-by-side');
+    assert.ok(await page.$eval('[data-stereo]', (b) => b.classList.contains('on')), 'the 3D button is lit');
+    await page.waitForTimeout(600);
+    const png = await page.screenshot({ path: shot('stereo-side-by-side') });
+    const sbs = await halves(png);
+    assert.ok(sbs.grassL > 0.2 && sbs.grassR > 0.2, `both eyes see the pitch: ${JSON.stringify(sbs)}`);
+    assert.ok(Math.abs(sbs.grassL - sbs.grassR) < 0.15, `the same scene in both halves: ${JSON.stringify(sbs)}`);
+    assert.ok(sbs.differ > 0.002, `from two eye positions, not one picture twice: ${JSON.stringify(sbs)}`);
+    assert.ok(Math.abs(mono.grassL - sbs.grassL) > 0.01 || mono.differ !== sbs.differ, 'not the mono picture');
+    await page.click('[data-stereo]');
+    await waitFor(page, async () => (await stats(page)).stereo.views === 1, 'one view again', 5000);
+    assert.equal(await page.$eval('[data-vr="stand"]', (b) => b.hidden), true, 'no VR button without WebXR');
+
+    // A browser that offers immersive-vr (a stand-in for navigator.xr).
+    const vr = await browser.newPage({ viewport: { width: 640, height: 360 } });
+    await vr.addInitScript(() => {
+      window.__xrRequests = [];
+      Object.defineProperty(navigator, 'xr', { configurable: true, value: {
+        isSessionSupported: async (mode) => mode === 'immersive-vr',
+        requestSession: async (mode, init) => { window.__xrRequests.push({ mode, init }); throw new Error('no headset here'); },
+      } });
+    });
+    await vr.goto(`${server.url}?fixed-quality&aa=0&shadows=0`);
+    await vr.waitForFunction(() => document.querySelector('[data-vr="stand"]')?.hidden === false, null, { timeout: 45000 });
+    assert.equal(await vr.$eval('[data-vr="touchline"]', (b) => b.hidden), false, 'both seats offered');
+    await vr.$eval('[data-vr="stand"]', (b) => b.click());   // (a software renderer this slow fails Playwright's "stable" check)
+    await vr.waitForFunction(() => window.__xrRequests.length === 1, null, { timeout: 5000 });
+    const req = await vr.evaluate(() => window.__xrRequests[0]);
+    assert.equal(req.mode, 'immersive-vr');
+    const xr = await vr.evaluate(() => window.matchcast.stats().stereo.xr);
+    assert.equal(xr.supported, true);
+    assert.match(xr.error ?? '', /no headset/, 'a refused session is reported, the page goes on');
+    await vr.close();
     assert.deepEqual(errors, []);
   });
 });

@@ -125,10 +125,10 @@ export function shotRig(ctx) {
         return { pos: [bx - g * 3, 1.3, z], look: [bx, 0.6, by], fov: clamp(2 * Math.atan(9 / d) / DEG, 14, 50) };
       }
       if (ctx.angle === 'high') return { pos: [bx, 38, halfW + 45], look: [bx, 0, by * 0.5], fov: 34 };
-      // Behind the goal, above the crossbar, a little towards the ball's
-      // side, looking out along the pitch at the ball and the goalmouth.
-      return { pos: [gx + g * 8, 5.5, clamp(by * 0.35, -8, 8)],
-        look: [bx + (gx - bx) * 0.3, 0.5, by * 0.65], fov: portrait ? 62 : 50 };
+      // High behind the goal, looking out along the pitch: the goalmouth in
+      // front, the play further out as far as the ball is (14 to 40 m).
+      const out = clamp(Math.abs(bx - gx) * 0.6, 14, 40);
+      return { pos: [gx + g * 9, 9, clamp(by * 0.25, -6, 6)], look: [gx - g * out, 0, by * 0.5], fov: portrait ? 66 : 55 };
     }
     case 'tracking':
     default: {
@@ -232,6 +232,11 @@ export class DirectorTrack {
         return { cut: true, jumped: true };
       }
       if (shift.pos >= r.seq + seg.to) {
+        // A slow page sees the end late: the overshoot is carried on, so
+        // that the replay lasts what it should at any picture rate.
+        const rate = seg.speed * Math.max(0.25, streamSpeed);
+        const over = Math.max(0, Math.min(2000, ((shift.pos - (r.seq + seg.to)) / rate) * this.frameMs));
+        now -= over;
         this.segment++;
         if (this.segment < r.replay.length) {
           this._enterSegment(shift, streamSpeed, now);

@@ -12,12 +12,14 @@ import { Overlays } from './scene/overlays.js';
 import { makeKit } from './scene/kit.js';
 import { Cameras } from './cameras.js';
 import { Director } from './director.js';
+import { Stereo } from './stereo.js';
 import { Hud } from './hud.js';
 import { KickSound } from './audio.js';
 import { bindControls, markCamera, updateReplayBar } from './controls.js';
 import { JitterBuffer } from './net/jitter.js';
 import { TimeShift } from './net/timeshift.js';
 import { ServerReplay, listRecordings } from './recordings.js';
+import { ServerShift } from './net/server_shift.js';
 import { Stream } from './net/stream.js';
 import { Codec, loadDecoder, readHello } from './net/codec.js';
 import { blendFrames } from './model/interp.js';
@@ -41,6 +43,7 @@ const ball = new Ball(stage.scene);
 const cameras = new Cameras(stage.camera, canvas, field);
 const director = new Director(() => timeshift);   // the server's director track drives the default camera
 cameras.director = director;
+const stereo = new Stereo(stage, { get width() { return field.width; } });   // side by side (V), WebXR seats
 let players = null;       // built from the hello's skeleton
 let overlays = null;
 let match = null;         // readHello() result
@@ -113,6 +116,7 @@ function wsQuery() {
   return params.has('channel') ? `?channel=${encodeURIComponent(params.get('channel'))}` : '';
 }
 let serverReplay = null;
+let serverShift = null;   // the relay's time shift on the live game (net/server_shift.js)
 
 function startStream() {
   const wsUrl = params.get('ws') ??
@@ -169,7 +173,11 @@ function startStream() {
       if (connection !== 'open') hud.status(null);
       connection = 'open';
       pushFrame(frame);
-      timeshift.record(buf, frame);
+      // During the relay's time shift the frames are the past: not kept.
+      if (!serverShift?.active) {
+        timeshift.record(buf, frame);
+        serverShift?.noteLive(frame);
+      }
     },
     onBadMessage(err) {
       counters.badMessages++;
@@ -187,6 +195,7 @@ function onControl(msg) {
   lastControl = msg.type;
   if (msg.type === 'director') { director.cue(msg); return; }
   if (events.control(msg)) return;
+  if (serverShift?.control(msg)) { showReplay(); return; }
   if (msg.type === 'replay' && serverReplay) serverReplay.status(msg);
   else if (msg.type === 'reach_map') {
     if (overlays && players && overlays.setReachMap(msg, { 1: players.kits[1].shirtColor, [-1]: players.kits[-1].shirtColor }))
@@ -235,6 +244,7 @@ if (params.has('fixture')) {
 } else if (!(await local.takesOver(params))) {
   hud.status('Connecting to the match feed…');
   stream = startStream();
+  if (!recording) serverShift = new ServerShift((m) => stream.send(m));
   if (recording) serverReplay = new ServerReplay(recording, (m) => stream.send(m));
   listRecordings(document.getElementById('rec-list'), recording);
 }
@@ -295,6 +305,26 @@ const app = {
       if (cmd === 'seek' || cmd.endsWith('goal')) events.jump();
       return;
     }
+    if (serverShift?.active) {   // the relay's recording: the bar drives it
+      serverShift.command(cmd, arg);
+      events.jump();
+      showReplay();
+      return;
+    }
+    // Joined late (5 s or more after kick-off): the kick-off (the bar's left
+    // end) and the goals before the page's own history are the relay's.
+    if (serverShift && serverShift.firstLive > 50) {
+      const at = timeshift.active ? timeshift.pos : timeshift.last - 100;
+      const toStart = cmd === 'seek' && arg <= 0.01;
+      const toGoal = cmd === 'prev_goal' && !timeshift.goals.some((g) => g < at);
+      if (toStart || toGoal) {
+        timeshift.live();
+        serverShift.enter(toStart ? 0 : serverShift.liveTime, toGoal ? 'prev_goal' : null);
+        events.jump();
+        showReplay();
+        return;
+      }
+    }
     const here = () => (view ? view.seq : timeshift.last);
     switch (cmd) {
       case 'toggle':
@@ -318,6 +348,7 @@ const app = {
 bindControls(app, canvas);
 function showReplay() {
   if (serverReplay) { updateReplayBar(serverReplay.bar()); return; }
+  if (serverShift?.active) { updateReplayBar(serverShift.bar()); return; }
   if (timeshift.bar) { updateReplayBar(timeshift.bar(hud.cyclesPerSecond)); return; }
   updateReplayBar({ available: timeshift.entries.length > 40, active: timeshift.active, paused: timeshift.paused,
     fraction: timeshift.fraction(), behindMs: timeshift.behindMs(), speed: timeshift.speed });
@@ -334,7 +365,6 @@ let renderMs = 0, updateMs = 0;
 let lastStats = 0, lastBytes = 0, kbps = 0, lastAdapt = performance.now() + 2000;
 
 function frameLoop(now) {
-  requestAnimationFrame(frameLoop);
   const dt = Math.min(0.1, (now - lastNow) / 1000);
   lastNow = now;
   stage.resize();
@@ -363,7 +393,7 @@ function frameLoop(now) {
   const hide = cameras.update(dt, { ball: view?.ball ?? { x: 0, y: 0, z: 0 }, players, selected });
   if (players && players.hiddenKey !== hide) players.hiddenKey = hide;
   const t0 = performance.now();
-  stage.renderer.render(stage.scene, stage.camera);
+  stereo.render();
   renderMs += (performance.now() - t0 - renderMs) * 0.1;
   updateMs += (t0 - now - updateMs) * 0.1;
   counters.rendered++;
@@ -384,19 +414,21 @@ function frameLoop(now) {
       dropped: buffer.dropped + buffer.late + counters.decodeErrors + counters.skipped });
   }
 }
-requestAnimationFrame(frameLoop);
+// The renderer's loop: the display's rate, or the headset's in WebXR.
+stage.renderer.setAnimationLoop(frameLoop);
 
 // --- a read-only hook for tests and curious users -----------------------------
 
 window.matchcast = Object.freeze({
   stats: () => ({
     ...counters, ...events.counts, connection, connects: stream?.connects ?? 0, camera: cameras.mode,
-    director: director.stats(), bodies: players?.lodCounts() ?? null,
+    director: director.stats(), bodies: players?.lodCounts() ?? null, stereo: stereo.stats(),
     buffered: buffer.size, dropped: buffer.dropped, late: buffer.late, resyncs: buffer.resyncs,
     fps: fpsWindow.length, kbps, seq: view?.seq ?? null, time: view?.time ?? null,
     playMode: view?.playMode ?? null, selected, hello: !!match,
     teams: match ? [hud.teams[1].name, hud.teams[-1].name] : null,
     banner: hud.lastBanner ?? null, banners: hud.recentBanners ?? [], serverReplay: serverReplay?.state ?? null, lastControl,
+    serverShift: serverShift?.stats() ?? null,
     local: local.stats(),
     timeshift: { active: timeshift.active, paused: timeshift.paused, pos: timeshift.pos, first: timeshift.first,
       last: timeshift.last, goals: [...timeshift.goals], bytes: timeshift.bytes, speed: timeshift.speed }, sounds: sound.played, renderMs, updateMs, scale: stage.scale,
