@@ -319,6 +319,30 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       a[static_cast<std::size_t>(d)] += (act->angles[static_cast<std::size_t>(d)] - a[static_cast<std::size_t>(d)]) * w;
     }
   }
+  // Inertialization (Bollo 2016): a target that jumps more than a motion
+  // moves in a frame is reached through a decaying offset instead.
+  if (in.reset) {
+    ctx.blend_x.fill(0.0f);
+    ctx.blend_v.fill(0.0f);
+  } else {
+    constexpr float kJumpDeg = 10.0f;
+    // Critically damped decay, half-life 0.1 s (y = 2 ln2 / half-life).
+    const float y = 13.862944f, e = pm::exp2(-in.dt / 0.1f);
+    for (int d = 0; d < dof::kRHip; ++d) {
+      const auto k = static_cast<std::size_t>(d);
+      float& x = ctx.blend_x[k];
+      float& v = ctx.blend_v[k];
+      if (std::fabs(a[k] - ctx.last_target[k]) > kJumpDeg) x = ctx.last_angles[k] - a[k];
+      const float j1 = v + x * y;
+      x = e * (x + j1 * in.dt);
+      v = e * (v - j1 * y * in.dt);
+    }
+  }
+  for (int d = 0; d < dof::kRHip; ++d) {
+    const auto k = static_cast<std::size_t>(d);
+    ctx.last_target[k] = a[k];
+    a[k] += ctx.blend_x[k];
+  }
   const BodyFrame body(px, py, heading);
   if (act != nullptr && w > 0 && act->feet) {
     // The kick places both feet in field space; blend from the footsteps'.
@@ -412,23 +436,27 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // limit held short) lifts the body: it rests on the grass. Once before a
   // kick's contact is made (so it is made where the body is) and once after
   // the joint speed limit.
-  auto rest_on_grass = [&] {
+  auto rest_on_grass = [&](float leeway_deg) {
     const bool whole = act != nullptr && act->whole_body && w > 0;
     std::array<glm::mat4, kHumanJointCount> m;
     LocalToModelJob fk{&limits_from, std::span<const float>(a.data(), a.size()), glm::vec3(0, pelvis_h, 0), m};
     if (!whole) fk.joint_mask = kLegJoints;
     if (fk.Run()) {
       for (const auto& [joint, d] : {std::pair{kRFoot, dof::kRAnkle}, std::pair{kLFoot, dof::kLAnkle}}) {
+        // Within the joint speed limit, and within `leeway_deg` of the pitch
+        // it has now (after the limit, the ankle's turn must stay small).
         const float last = ctx.last_angles[static_cast<std::size_t>(d)];
-        level_foot(limits_from, m, a, joint, d, in.reset ? -INFINITY : last - kMaxLegStepDeg,
-                   in.reset ? INFINITY : last + kMaxLegStepDeg);
+        const float now = a[static_cast<std::size_t>(d)];
+        level_foot(limits_from, m, a, joint, d,
+                   in.reset ? -INFINITY : std::max(last - kMaxLegStepDeg, now - leeway_deg),
+                   in.reset ? INFINITY : std::min(last + kMaxLegStepDeg, now + leeway_deg));
       }
       pelvis_h += std::max(0.0f, -lowest_point_ms(limits_from, m, whole ? kAllJoints : kFeetJoints));
     }
   };
   clamp_to_limits(limits_from, a);
   const bool contact = act != nullptr && act->contact && act->feet && act->foot_weight[act->kick_foot] > 0;
-  rest_on_grass();
+  if (contact) rest_on_grass(180.0f);
   // A kick's contact: the kicking foot's box touches the ball (a few mm
   // off its surface, the margin of the stream's quantization), whatever the
   // leg's reach, the ankle's limits and the grass made of the planned spot.
@@ -447,7 +475,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       if (lo.planted[i] && (limited[j0] || limited[j0 + 1] || limited[j0 + 2])) ctx.loco.feet[i].release = true;
     }
   }
-  rest_on_grass();
+  rest_on_grass(8.0f);
   for (int i = 0; i < 2; ++i)  // every touch-down counts for the mocap walk's cadence guard
     if (lo.planted[i] && !ctx.last_planted[i]) ctx.walk_since_land[i] = 0;
   ctx.last_planted[0] = lo.planted[0];

@@ -4,6 +4,11 @@
 // cannot bend, the head on the server's gaze, and an optional action motion
 // (kick, tackle, catch, dive; action_motion.hpp) layered over it.
 //
+// Transitions blend (Bollo, "High-Performance Animation Transitions in Gears of
+// War", GDC 2016; the decaying spring of Holden's Motion-Matching, spring.h):
+// where the upper body's target jumps (an action starts, ends or gives way to
+// another), the jump becomes an offset that dies away in about 0.2 s.
+//
 // No pops: the heading turns at most kMaxTurnPerFrameDeg, and every joint
 // rotates at most its group's limit per frame (legs kMaxLegStepDeg, arms,
 // trunk and head kMaxUpperStepDeg: human angular speeds, a sprinter's knee
@@ -32,6 +37,9 @@ struct PlayerAnim {
   float pelvis_height = 0.975f;  // previous frame's pelvis height (m)
   float heading = 0;           // heading of the previous frame, field deg (rate-limited)
   std::array<float, dof::kCount> last_angles{};  // previous frame's output (joint speed limit)
+  // Inertialization of the upper body (pelvis, torso, head, arms): the
+  // offset still to decay and its velocity, per dof, and last frame's target.
+  std::array<float, dof::kRHip> blend_x{}, blend_v{}, last_target{};
   bool was_in_action = false;
   bool last_planted[2] = {false, false};
   // The action playing or about to play (kick_planner.hpp), and its bookkeeping.
