@@ -64,4 +64,6 @@ replicas=$(curl -s "http://127.0.0.1:18201/jsz?accounts=true&streams=true&config
 echo "cluster: MATCHCAST_KEY replicas: ${replicas:-unknown}"
 [ "${replicas:-0}" = 3 ] || { echo "cluster: the keyframe stream should have 3 replicas"; exit 1; }
 grep -q nats_stream_ready "$work/origin.log" || { echo "cluster: the origin's stream is not ready"; cat "$work/origin.log"; exit 1; }
+# Neither user was refused anything it needs (the edge's snapshot reads).
+if grep -h Violation "$work"/nats-*.log; then echo "cluster: a node refused a request (above)"; exit 1; fi
 echo "cluster: ok"

@@ -158,7 +158,11 @@ void EdgeRelay::sync_games() {
       std::lock_guard lock(mutex_);
       if (auto it = games_.find(d.name); it != games_.end()) it->second.subscribed = ok;
     }
-    if (d.fetch && up) {
+    if (d.fetch && up && !d.sync->resync_pending() && d.sync->in_sync()) {
+      // The live stream resumed without a gap before the read: none needed.
+      std::lock_guard lock(mutex_);
+      if (auto it = games_.find(d.name); it != games_.end()) it->second.fetch = false;
+    } else if (d.fetch && up) {
       if (!d.sync->resync_pending()) d.sync->begin_resync();
       std::string bytes, error;
       const auto r = link_->last_message(stream_name(config_.subject_prefix),

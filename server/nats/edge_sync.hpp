@@ -68,10 +68,13 @@ class EdgeSync {
   // One message from <prefix>.<game>.live. While a resync is pending it is
   // buffered (bounded) and applied after the snapshot.
   void on_live(std::string_view bytes);
-  // Starts a resync: live messages are buffered until on_snapshot().
+  // Starts a resync: live messages are buffered until on_snapshot(), or
+  // until one arrives that continues exactly where the spectators are (the
+  // reconnect lost nothing), which ends it at once.
   void begin_resync();
   // The game's latest snapshot from the keyframe stream (nullptr: none
-  // stored yet), then the buffered live messages after it.
+  // stored yet), then the buffered live messages after it. Ignored when no
+  // resync is pending any more.
   void on_snapshot(const std::string* bytes);
 
   // The NATS link dropped / came back (the caller then resyncs).
@@ -82,10 +85,14 @@ class EdgeSync {
 
   bool has_hello() const;
   bool resync_pending() const;
+  // Up to date: a hello, no resync pending, no keyframe awaited.
+  bool in_sync() const;
   EdgeSyncStats stats() const;
   const std::shared_ptr<relay::Channel>& channel() const { return channel_; }
 
  private:
+  // `e` is the next message after what the spectators have, with nothing missing.
+  bool continues(const Envelope& e) const;
   void apply(const Envelope& e);
   void apply_hello(std::string_view hello);
   void publish_frame(std::string_view bytes, bool keyframe);

@@ -367,6 +367,19 @@ TEST_F(NatsClusterFailover, EdgesAndTheOriginRideOutTheLossOfANode) {
     EXPECT_EQ(s->bad(), 0);
   }
 
+  // Both edges resynced from the keyframe stream after their moves (a
+  // snapshot found), and no node refused anything to the deployment's users.
+  for (auto port : {a_port, b_port}) {
+    const std::string m = http_get(port, "/metrics");
+    EXPECT_GE(metric(m, "matchcast_edge_snapshot_fetches_total{result=\"found\"}"), 1) << m;
+    EXPECT_GE(metric(m, "matchcast_edge_nats_reconnects_total"), 1) << m;
+  }
+  for (int i = 1; i <= 3; ++i) {
+    const std::string log = read_file(dir_ / ("nats-" + std::to_string(i) + ".log"));
+    const auto at = log.find("Violation");
+    EXPECT_EQ(at, std::string::npos) << "nats-" << i << ": " << log.substr(at == std::string::npos ? 0 : at, 200);
+  }
+
   // The links as the processes logged them.
   nodes_[2].proc.stop(SIGKILL);
   a1.reset();

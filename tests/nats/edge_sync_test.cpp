@@ -221,6 +221,27 @@ TEST_F(NatsEdgeSync, AnOlderSnapshotIsIgnoredAndTheLiveGapWaitsForAKeyframe) {
   EXPECT_EQ(sync_->stats().resyncs, 0u);
 }
 
+TEST_F(NatsEdgeSync, AReconnectThatLostNothingResumesWithoutWaitingForTheSnapshot) {
+  sync_->on_snapshot(nullptr);
+  sync_->on_live(wrap(Kind::Hello, 1, hello_));
+  sync_->on_live(live(2, true));
+  sync_->on_live(live(3, false));
+  EXPECT_TRUE(sync_->in_sync());
+  sync_->begin_resync();  // reconnected
+  EXPECT_FALSE(sync_->in_sync());
+  sync_->on_live(live(4, false));  // the very next one: nothing was lost
+  EXPECT_FALSE(sync_->resync_pending());
+  EXPECT_TRUE(sync_->in_sync());
+  sync_->on_live(live(5, false));
+  // The snapshot read that was under way comes back late: ignored.
+  const std::string snap = wrap_snapshot(2, hello_, frame(102, true));
+  sync_->on_snapshot(&snap);
+  sync_->on_live(live(6, false));
+  EXPECT_EQ(spectator_->summary(), (Seq{"H", "K102", "D103", "D104", "D105", "D106"}));
+  EXPECT_EQ(sync_->stats().resyncs, 0u);
+  EXPECT_EQ(sync_->stats().gaps, 0u);
+}
+
 TEST_F(NatsEdgeSync, HostileInputIsCountedAndSkipped) {
   sync_->on_snapshot(nullptr);
   sync_->on_live(wrap(Kind::Hello, 1, hello_));
