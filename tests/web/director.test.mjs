@@ -69,8 +69,9 @@ describe('the director on the page', { timeout: 240000 }, () => {
       return d.log.some((e) => e.shot === 'tracking' || e.shot === 'attack') ? d : null;
     }, 'a cut to the play', 20000, 100);
     await snap(`play-${play.shot}`);
-    // No cut comes sooner than ~3 s of game after the last.
-    for (let i = 1; i < play.log.length; i++) {
+    // No cut comes sooner than ~3 s of game after the last (the first entry
+    // is where the page came in: maybe a repeat of the kick-off's cut).
+    for (let i = 2; i < play.log.length; i++) {
       if (play.log[i].shot === 'replay' || play.log[i - 1].shot === 'replay') continue;
       assert.ok(play.log[i].seq - play.log[i - 1].seq >= 30, `cuts too close: ${JSON.stringify(play.log)}`);
     }

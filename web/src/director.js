@@ -212,7 +212,10 @@ export class DirectorTrack {
   // playhead); shift: the time shift; enabled: the director drives the
   // camera (replays only then); streamSpeed: the stream's rate, x real time.
   // Returns { cut, jumped } : cut = the camera must cut; jumped = the picture
-  // jumped in time (no kick sounds for the jump).
+  // left a replay for the user's own time shift or for live at once (no kick
+  // sounds for the jump). While `replaying`, the page plays no events at all
+  // (a silent replay), so that catching up from the replay cue afterwards
+  // goes on from where the sounds and banners stopped.
   update(pos, shift, { enabled = true, streamSpeed = 1, now = 0 } = {}) {
     let cut = false, jumped = false;
     // Replays and the catch-up keep to the clock however slowly the page
@@ -251,18 +254,20 @@ export class DirectorTrack {
           this.lastPos = r.seq;
           this.replay = null;
         }
-        return { cut: true, jumped: true };
+        return { cut: true, jumped: false };
       }
-      // The replay is silent: no kick sounds or banners of the past.
-      return { cut: false, jumped: true };
+      return { cut: false, jumped: false };
     }
     if (this.phase === 'catchup' && !shift.active) { this.phase = 'live'; this.clock = null; }
 
     const prev = this.lastPos ?? pos;
     this.lastPos = pos;
-    if (Math.abs(pos - prev) > 60) jumped = true;
+    // The picture jumped (a seek, a resync; not a fast stream drawn slowly):
+    // the camera cuts, and no replay is started for what was jumped over.
+    // Sounds and banners are the announcer's business (it has its own rule).
+    const leap = Math.abs(pos - prev) > 60 * Math.max(1, streamSpeed) + 40;
     // A replay cue passed while watching live: play it.
-    if (this.phase === 'live' && enabled && !shift.active && !jumped) {
+    if (this.phase === 'live' && enabled && !shift.active && !leap) {
       for (const c of this.cues) {
         if (c.shot !== 'replay' || c.seq <= prev || c.seq > pos || this.done.has(c.seq)) continue;
         this.done.add(c.seq);
@@ -274,12 +279,12 @@ export class DirectorTrack {
         this.counts.replays++;
         // Live pauses here: the replay is watched, then the catch-up.
         this._enterSegment(shift, streamSpeed, now);
-        return { cut: true, jumped: true };
+        return { cut: true, jumped: false };
       }
     }
     if (this.pin && pos >= this.pin.seq) this.pin = null;
     const cue = this.pin ?? this.cueAt(pos);
-    if (cue && this._show(cue, cue.cut || jumped, now)) cut = true;
+    if (cue && this._show(cue, cue.cut || leap, now)) cut = true;
     return { cut, jumped };
   }
 

@@ -379,7 +379,8 @@ function frameLoop(now) {
   if (shifted && !timeshift.active) { events.jump(); s = live; }   // caught up with live
   if (s) {
     view = blendFrames(s.a, s.b, s.t, view);
-    events.step(s.passed, timeshift.active ? timeshift.pos : buffer.playhead,
+    // A director's replay is silent (no kicks or banners of the past again).
+    if (!director.track.replaying) events.step(s.passed, timeshift.active ? timeshift.pos : buffer.playhead,
       timeshift.active ? (timeshift.paused ? 0 : timeshift.speed * 1000 / buffer.frameMs) : buffer.rate);
     players.update(view.players, { stamina, staminaMax: match?.params?.stamina_max, playMode: view.playMode, ball: view.ball });
     ball.update(view.ball);
