@@ -124,6 +124,10 @@ TEST_F(RelayTlsTest, WssSpectatorDecodesEveryFrameOfABatchedBurst) {
   constexpr int kFrames = 300;
   for (int f = 0; f < kFrames; ++f) channel_->publish_frame(frame_bytes(f, f % 20 == 0, 20000), f % 20 == 0);
   for (int f = 0; f < kFrames; ++f) ASSERT_EQ(c.read(), frame_bytes(f, f % 20 == 0, 20000)) << "frame " << f;
+  // The counters move in the write's completion handler, which may run after
+  // the client has read the bytes: wait for them, within a bound.
+  for (int i = 0; i < 200 && server.stats().messages_sent.load() < kFrames + 1u; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   EXPECT_EQ(server.stats().messages_sent.load(), kFrames + 1u);
   EXPECT_LT(server.stats().writes.load(), server.stats().messages_sent.load());
 }

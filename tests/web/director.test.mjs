@@ -12,7 +12,7 @@ import { launchBrowser, shot, startServer, stats, waitFor } from './harness.mjs'
 
 const SPEED = 2;
 
-describe('the director on the page', { timeout: 240000 }, () => {
+describe('the director on the page', { timeout: 420000 }, () => {
   let server, browser, page;
   const errors = [];
   const director = async () => (await stats(page))?.director ?? null;
