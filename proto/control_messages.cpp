@@ -1,5 +1,7 @@
 #include "proto/control_messages.hpp"
 
+#include "proto/json_number.hpp"
+
 #include <algorithm>
 
 #include "proto/pose_frame.hpp"
@@ -21,7 +23,7 @@ Side side_from(const json& j) {
   throw std::runtime_error("side must be \"left\", \"right\" or \"neutral\"");
 }
 std::uint8_t unum_from(const json& j) {
-  const int u = j.get<int>();
+  const int u = json_integer<int>(j);
   if (u < 0 || u > kPlayersPerSide) throw std::runtime_error("unum out of range");
   return static_cast<std::uint8_t>(u);
 }
@@ -68,7 +70,7 @@ std::array<int, 11> stamina_from(const json& j) {
   if (!j.is_array() || j.size() != 11) throw std::runtime_error("stamina must be an array of 11 numbers");
   std::array<int, 11> out{};
   for (std::size_t i = 0; i < 11; ++i) {
-    const int v = j.at(i).get<int>();
+    const int v = json_integer<int>(j.at(i));
     if (v < -1 || v > 1000000) throw std::runtime_error("stamina out of range");
     out[i] = v;
   }
@@ -119,31 +121,31 @@ struct ToJson {
 ControlMessage parse(const json& j, const std::string& type) {
   if (type == "kick") {
     KickEvent e;
-    e.seq = j.at("seq").get<std::uint32_t>();
-    e.time = j.at("time").get<int>();
+    e.seq = json_integer<std::uint32_t>(j.at("seq"));
+    e.time = json_integer<int>(j.at("time"));
     e.side = side_from(j.at("side"));
     e.unum = unum_from(j.at("unum"));
     const std::string foot = j.at("foot").get<std::string>();
     if (foot != "left" && foot != "right") throw std::runtime_error("foot must be \"left\" or \"right\"");
     e.foot = foot == "left" ? Foot::Left : Foot::Right;
-    e.contact_time_ms = j.at("contact_time_ms").get<std::uint64_t>();
+    e.contact_time_ms = json_integer<std::uint64_t>(j.at("contact_time_ms"));
     return e;
   }
   if (type == "goal") {
     GoalEvent e;
-    e.seq = j.at("seq").get<std::uint32_t>();
-    e.time = j.at("time").get<int>();
+    e.seq = json_integer<std::uint32_t>(j.at("seq"));
+    e.time = json_integer<int>(j.at("time"));
     e.side = side_from(j.at("side"));
     const json& s = j.at("score");
     if (!s.is_array() || s.size() != 2) throw std::runtime_error("score must be [left, right]");
-    e.score_left = s.at(0).get<int>();
-    e.score_right = s.at(1).get<int>();
+    e.score_left = json_integer<int>(s.at(0));
+    e.score_right = json_integer<int>(s.at(1));
     return e;
   }
   if (type == "play_mode") {
     PlayModeEvent e;
-    e.seq = j.at("seq").get<std::uint32_t>();
-    e.time = j.at("time").get<int>();
+    e.seq = json_integer<std::uint32_t>(j.at("seq"));
+    e.time = json_integer<int>(j.at("time"));
     const auto mode = play_mode_from_name(j.at("mode").get<std::string>());
     if (!mode) throw std::runtime_error("unknown play mode name");
     e.mode = *mode;
@@ -151,8 +153,8 @@ ControlMessage parse(const json& j, const std::string& type) {
   }
   if (type == "card") {
     CardEvent e;
-    e.seq = j.at("seq").get<std::uint32_t>();
-    e.time = j.at("time").get<int>();
+    e.seq = json_integer<std::uint32_t>(j.at("seq"));
+    e.time = json_integer<int>(j.at("time"));
     e.side = side_from(j.at("side"));
     e.unum = unum_from(j.at("unum"));
     const std::string card = j.at("card").get<std::string>();
@@ -162,17 +164,17 @@ ControlMessage parse(const json& j, const std::string& type) {
   }
   if (type == "score") {
     ScoreUpdate e;
-    e.seq = j.at("seq").get<std::uint32_t>();
-    e.time = j.at("time").get<int>();
-    e.left = j.at("left").get<int>();
-    e.right = j.at("right").get<int>();
+    e.seq = json_integer<std::uint32_t>(j.at("seq"));
+    e.time = json_integer<int>(j.at("time"));
+    e.left = json_integer<int>(j.at("left"));
+    e.right = json_integer<int>(j.at("right"));
     e.pen_left = j.value("pen_left", 0);
     e.pen_right = j.value("pen_right", 0);
     return e;
   }
   if (type == "teams") {
     TeamsUpdate e;
-    e.seq = j.at("seq").get<std::uint32_t>();
+    e.seq = json_integer<std::uint32_t>(j.at("seq"));
     e.left = team_from(j.at("left"));
     e.right = team_from(j.at("right"));
     return e;
@@ -182,18 +184,18 @@ ControlMessage parse(const json& j, const std::string& type) {
     const std::string status = j.at("status").get<std::string>();
     if (status != "lost" && status != "back") throw std::runtime_error("status must be \"lost\" or \"back\"");
     e.lost = status == "lost";
-    e.seq = j.at("seq").get<std::uint32_t>();
-    e.server_time_ms = j.at("server_time_ms").get<std::uint64_t>();
+    e.seq = json_integer<std::uint32_t>(j.at("seq"));
+    e.server_time_ms = json_integer<std::uint64_t>(j.at("server_time_ms"));
     e.detail = j.value("detail", "");
     return e;
   }
   if (type == "reach_map") {
     ReachMapUpdate e;
-    e.seq = j.at("seq").get<std::uint32_t>();
-    e.time = j.at("time").get<int>();
+    e.seq = json_integer<std::uint32_t>(j.at("seq"));
+    e.time = json_integer<int>(j.at("time"));
     const json& g = j.at("grid");
-    e.width = g.at("w").get<int>();
-    e.height = g.at("h").get<int>();
+    e.width = json_integer<int>(g.at("w"));
+    e.height = json_integer<int>(g.at("h"));
     e.cell = g.at("cell").get<double>();
     e.x0 = g.at("x0").get<double>();
     e.y0 = g.at("y0").get<double>();
@@ -210,8 +212,8 @@ ControlMessage parse(const json& j, const std::string& type) {
   }
   if (type == "stamina") {
     StaminaUpdate e;
-    e.seq = j.at("seq").get<std::uint32_t>();
-    e.time = j.at("time").get<int>();
+    e.seq = json_integer<std::uint32_t>(j.at("seq"));
+    e.time = json_integer<int>(j.at("time"));
     e.left = stamina_from(j.at("left"));
     e.right = stamina_from(j.at("right"));
     return e;

@@ -1,5 +1,7 @@
 #include "proto/director_cue.hpp"
 
+#include "proto/json_number.hpp"
+
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -69,15 +71,15 @@ json director_cue_to_json(const DirectorCue& c) {
 
 DirectorCue director_cue_from_json(const json& j) {
   DirectorCue c;
-  c.seq = j.at("seq").get<std::uint32_t>();
-  c.time = j.at("time").get<int>();
+  c.seq = json_integer<std::uint32_t>(j.at("seq"));
+  c.time = json_integer<int>(j.at("time"));
   c.cut = j.at("cut").get<bool>();
   const auto shot = shot_from_name(j.at("shot").get<std::string>());
   if (!shot) throw std::runtime_error("unknown shot");
   c.shot = *shot;
   if (const auto s = j.find("subject"); s != j.end()) {
     c.subject_side = side_of(s->at("side"));
-    const int unum = s->at("unum").get<int>();
+    const int unum = json_integer<int>(s->at("unum"));
     if (unum < 1 || unum > kPlayersPerSide || c.subject_side == Side::Neutral)
       throw std::runtime_error("subject must be a side and a unum 1..11");
     c.subject_unum = static_cast<std::uint8_t>(unum);
@@ -96,8 +98,8 @@ DirectorCue director_cue_from_json(const json& j) {
       throw std::runtime_error("replay must hold 1 to 4 segments");
     for (const json& s : r) {
       ReplaySegment seg;
-      seg.from = s.at("from").get<int>();
-      seg.to = s.at("to").get<int>();
+      seg.from = json_integer<int>(s.at("from"));
+      seg.to = json_integer<int>(s.at("to"));
       if (seg.from >= seg.to || seg.from < -kMaxReplayReachFrames || seg.to > kMaxReplayReachFrames ||
           seg.to - seg.from > kMaxReplaySegmentFrames)
         throw std::runtime_error("replay segment out of range");

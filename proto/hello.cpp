@@ -1,5 +1,7 @@
 #include "proto/hello.hpp"
 
+#include "proto/json_number.hpp"
+
 #include "proto/pose_frame.hpp"
 #include "proto/quantizer.hpp"
 
@@ -20,7 +22,7 @@ json arr3(const std::array<float, 3>& a) { return json::array({a[0], a[1], a[2]}
 
 std::array<float, 3> get3(const json& j) {
   if (!j.is_array() || j.size() != 3) throw std::runtime_error("expected an array of 3 numbers");
-  return {j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>()};
+  return {json_float(j.at(0)), json_float(j.at(1)), json_float(j.at(2))};
 }
 
 }  // namespace
@@ -57,14 +59,14 @@ bool skeleton_from_json(const json& j, SkeletonDef& out, std::string& error) {
     for (const auto& jj : j.at("joints")) {
       JointDef d;
       d.name = jj.at("name").get<std::string>();
-      d.parent = jj.at("parent").get<int>();
+      d.parent = json_integer<int>(jj.at("parent"));
       if (d.parent < -1 || d.parent >= static_cast<int>(out.joints.size()))
         throw std::runtime_error("joint '" + d.name + "' has a parent that does not come before it");
       d.offset_ls = get3(jj.at("offset"));
       d.dofs = jj.at("dofs").get<std::string>();
       for (const auto& l : jj.at("limits")) {
         if (!l.is_array() || l.size() != 2) throw std::runtime_error("a limit is not [min, max]");
-        d.limits.push_back({l.at(0).get<float>(), l.at(1).get<float>()});
+        d.limits.push_back({json_float(l.at(0)), json_float(l.at(1))});
       }
       if (const auto seg = jj.find("segment"); seg != jj.end()) {
         d.segment.shape = seg->value("shape", "box") == "sphere" ? SegmentShape::Sphere : SegmentShape::Box;
@@ -113,8 +115,8 @@ bool hello_from_json(std::string_view text, Hello& out, std::string& error) {
   try {
     if (j.value("type", "") != "hello") throw std::runtime_error("\"type\" is not \"hello\"");
     out = Hello{};
-    out.protocol_major = j.at("protocol").at("major").get<int>();
-    out.protocol_minor = j.at("protocol").at("minor").get<int>();
+    out.protocol_major = json_integer<int>(j.at("protocol").at("major"));
+    out.protocol_minor = json_integer<int>(j.at("protocol").at("minor"));
     if (out.protocol_major != kProtocolMajor) {
       error = "unsupported protocol major version " + std::to_string(out.protocol_major) +
               " (this client reads version " + std::to_string(kProtocolMajor) + ")";
@@ -122,7 +124,7 @@ bool hello_from_json(std::string_view text, Hello& out, std::string& error) {
     }
     out.match_id = j.value("match_id", "");
     out.frame_rate = j.at("frame_rate").get<double>();
-    out.keyframe_interval = j.at("keyframe_interval").get<int>();
+    out.keyframe_interval = json_integer<int>(j.at("keyframe_interval"));
     if (!skeleton_from_json(j.at("skeleton"), out.skeleton, error)) return false;
     const json& f = j.at("field");
     FieldGeometry& g = out.field;

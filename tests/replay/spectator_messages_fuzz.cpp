@@ -1,0 +1,78 @@
+// libFuzzer target: the JSON messages a spectator sends, as the server reads
+// them: the session's reading (relay/spectator_message.hpp: time shift or
+// replay) and a replay player steered by them (pause, play, seek, speed,
+// goals) over a recording. The input is up to 8 messages, one a line,
+// given to a player in order. Must never crash, hang or read out of
+// bounds (ASan/UBSan); ignoring a message is fine.
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <boost/asio/io_context.hpp>
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+
+#include "server/record/recording_reader.hpp"
+#include "server/relay/spectator_message.hpp"
+#include "server/replay/replay_player.hpp"
+
+namespace {
+
+// The golden recording (10+ frames, a kick and a goal), read once into
+// memory; each input gets a reader of its own over it.
+struct Fixture {
+  std::string path;
+  mc::replay::RecordingSummary summary;
+  Fixture() {
+    std::ifstream in(std::string(MATCHCAST_SOURCE_DIR) + "/tests/proto/golden/recording_v3.mcrec", std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const int fd = ::memfd_create("spectator-fuzz", MFD_CLOEXEC);
+    if (fd < 0 || ::write(fd, bytes.data(), bytes.size()) != static_cast<ssize_t>(bytes.size())) std::abort();
+    path = "/proc/self/fd/" + std::to_string(fd);
+    mc::record::RecordingReader reader;
+    std::string error;
+    if (!reader.open(path, error) || !mc::replay::summarize(reader, summary, error)) std::abort();
+  }
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const Fixture fx;
+  static boost::asio::io_context ioc;
+  // One player for the whole run (its reader, encoder and channel are the
+  // heavy part), put back at the start, playing at speed 1, before each
+  // input; a fresh one every 10,000 inputs, and for the follow (time shift)
+  // mode on odd sizes.
+  static std::shared_ptr<mc::replay::ReplayPlayer> players[2];
+  static unsigned uses = 0;
+  const bool follow = (size & 1) != 0;
+  auto& player = players[follow];
+  if (!player || ++uses % 10000 == 0) {
+    if (player) player->close();
+    auto reader = std::make_unique<mc::record::RecordingReader>();
+    std::string error;
+    if (!reader->open(fx.path, error)) std::abort();
+    player = std::make_shared<mc::replay::ReplayPlayer>(ioc.get_executor(), "fuzz.mcrec", std::move(reader),
+                                                        fx.summary, follow);
+    player->start();
+  }
+  player->on_client_message(R"({"type":"replay","action":"speed","speed":1})");
+  player->on_client_message(R"({"type":"replay","action":"play"})");
+  const std::string_view input(reinterpret_cast<const char*>(data), size);
+  std::size_t pos = 0;
+  for (int n = 0; n < 8 && pos <= input.size(); ++n) {
+    std::size_t end = input.find('\n', pos);
+    if (end == std::string_view::npos) end = input.size();
+    const std::string_view text = input.substr(pos, end - pos);
+    (void)mc::relay::read_spectator_message(text);
+    player->on_client_message(text);
+    pos = end + 1;
+  }
+  ioc.restart();
+  ioc.poll();  // ready handlers only: the next frame's timer is 50 ms away at the least
+  return 0;
+}
