@@ -26,6 +26,9 @@ void ClientStats::merge(const ClientStats& o) {
   frames_skipped += o.frames_skipped;
   out_of_order += o.out_of_order;
   decode_errors += o.decode_errors;
+  resync_gaps += o.resync_gaps;
+  stalled_cut += o.stalled_cut;
+  stalled_not_cut += o.stalled_not_cut;
   if (first_error.empty()) first_error = o.first_error;
   delay.merge(o.delay);
 }
@@ -55,6 +58,7 @@ void LoadClient::start() {
 }
 
 void LoadClient::stop() {
+  ended_ = true;
   beast::error_code ec;
   pause_.cancel();
   open_ = false;
@@ -62,6 +66,7 @@ void LoadClient::stop() {
 }
 
 void LoadClient::note_failure(const char* step, beast::error_code ec) {
+  ended_ = true;
   ++stats_.failed;
   if (stats_.first_error.empty()) stats_.first_error = std::string(step) + ": " + ec.message();
 }
@@ -96,7 +101,19 @@ void LoadClient::on_handshake(beast::error_code ec, std::size_t) {
   ++stats_.connected;
   open_ = true;
   connected_at_ms_ = static_cast<std::uint64_t>(unix_ms_now());
-  if (options_.behaviour == Behaviour::Stalled) return;  // never reads: the socket fills up
+  if (options_.behaviour == Behaviour::Stalled) {
+    // Never reads (the socket fills up), or only after stall_for.
+    if (options_.stall_for.count() > 0) {
+      pause_.expires_after(options_.stall_for);
+      pause_.async_wait([self = shared_from_this()](beast::error_code e) {
+        if (e) return;
+        self->draining_ = true;
+        self->resumed_at_ms_ = unix_ms_now();
+        if (self->take_frames()) self->do_read();
+      });
+    }
+    return;
+  }
   if (take_frames()) do_read();
 }
 
@@ -111,8 +128,15 @@ void LoadClient::do_read() {
 
 void LoadClient::on_read(beast::error_code ec, std::size_t bytes) {
   if (ec) {
-    if (open_ && ec != net::error::operation_aborted) ++stats_.closed_by_server;
+    if (open_ && ec != net::error::operation_aborted) {
+      ++stats_.closed_by_server;
+      if (draining_ && !stall_settled_) {
+        ++stats_.stalled_cut;
+        stall_settled_ = true;
+      }
+    }
     open_ = false;
+    ended_ = true;
     return;
   }
   buffer_.commit(bytes);
@@ -143,10 +167,16 @@ bool LoadClient::take_frames() {
     }
     if (frame.opcode == 0x8) {  // close
       ++stats_.closed_by_server;
+      if (draining_ && !stall_settled_) {
+        ++stats_.stalled_cut;
+        stall_settled_ = true;
+      }
       stop();
       return false;
     }
     if (frame.opcode == 0x1 || frame.opcode == 0x2) ++stats_.messages;
+    if (frame.opcode == 0x1 && frame.payload.find("\"type\":\"feed\"") != std::string_view::npos)
+      last_feed_message_ms_ = unix_ms_now();
     if (frame.opcode == 0x2) handle_frame(frame.payload);
     buffer_.consume(frame.size);
   }
@@ -168,12 +198,20 @@ void LoadClient::handle_frame(std::string_view bytes) {
     } else if (header.seq > last_seq_ + 1) {
       ++stats_.gaps;
       stats_.frames_skipped += header.seq - last_seq_ - 1;
+      if (header.keyframe && now - last_feed_message_ms_ < 10000) ++stats_.resync_gaps;
     } else {
       ++stats_.out_of_order;
     }
   }
   last_seq_ = header.seq;
   have_seq_ = true;
+  // A stalled client reading again gets a frame sent after it resumed: the
+  // relay had not cut it off.
+  if (draining_ && !stall_settled_ && static_cast<double>(header.server_time_ms) > resumed_at_ms_) {
+    ++stats_.stalled_not_cut;
+    stall_settled_ = true;
+    stop();
+  }
   // The catch-up burst at join was stamped before this client existed: its
   // age says nothing about the relay's delay.
   if (header.server_time_ms >= connected_at_ms_)

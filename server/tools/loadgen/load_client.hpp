@@ -35,6 +35,14 @@ struct ClientStats {
   std::uint64_t frames_skipped = 0;  // sum of the jumps
   std::uint64_t out_of_order = 0;    // seq went backwards or repeated
   std::uint64_t decode_errors = 0;
+  // Of the gaps, those that end at a keyframe within 10 s of a "feed"
+  // message (lost/back): the resync after the game's feed restarted, which
+  // is expected, not a frame the relay failed to deliver.
+  std::uint64_t resync_gaps = 0;
+  // Stalled clients with a stall_for (soak.hpp): when they read again,
+  // whether the relay had cut them off (EOF or reset after what it had
+  // sent) or was still sending (a frame stamped after they resumed).
+  std::uint64_t stalled_cut = 0, stalled_not_cut = 0;
   std::string first_error;           // the first connect or decode error, for the report
   LatencyHistogram delay;
 
@@ -50,6 +58,9 @@ struct ClientOptions {
   std::chrono::milliseconds slow_read_pause{200};  // Slow: pause between reads
   bool decode = true;                               // full decode, or header only
   const SkeletonDef* skeleton = nullptr;            // from the hello
+  // Stalled only: read again after this long (0 = never) and find out
+  // whether the relay cut the connection meanwhile (ClientStats::stalled_*).
+  std::chrono::milliseconds stall_for{0};
 };
 
 class LoadClient : public std::enable_shared_from_this<LoadClient> {
@@ -57,6 +68,12 @@ class LoadClient : public std::enable_shared_from_this<LoadClient> {
   LoadClient(boost::asio::io_context& ioc, ClientOptions options, ClientStats& stats);
   void start();
   void stop();
+  // Connected now; ended: failed, closed, or stopped (soak.hpp replaces
+  // the clients that have ended, not those still connecting).
+  bool open() const { return open_; }
+  bool ended() const { return ended_; }
+  // A stalled client that has found out whether it was cut off.
+  bool stall_settled() const { return stall_settled_; }
 
  private:
   void note_failure(const char* step, boost::beast::error_code ec);
@@ -79,6 +96,9 @@ class LoadClient : public std::enable_shared_from_this<LoadClient> {
   std::unique_ptr<proto::FrameDecoder> decoder_;
   PoseFrame frame_;
   std::uint64_t connected_at_ms_ = 0;
+  double last_feed_message_ms_ = -1e18;  // a "feed" lost/back message, for resync_gaps
+  double resumed_at_ms_ = 0;             // a stalled client reading again
+  bool draining_ = false, stall_settled_ = false, ended_ = false;
   std::uint32_t last_seq_ = 0;
   bool have_seq_ = false;
   bool open_ = false;

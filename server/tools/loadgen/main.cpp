@@ -18,6 +18,7 @@
 #include "proto/hello.hpp"
 #include "server/tools/loadgen/load_client.hpp"
 #include "server/tools/loadgen/proc_stats.hpp"
+#include "server/tools/loadgen/soak.hpp"
 
 namespace po = boost::program_options;
 namespace net = boost::asio;
@@ -39,6 +40,11 @@ struct Options {
   int server_pid = 0;
   bool header_only = false;
   int nice = 10;
+  // --soak (soak.hpp): a changing population and a JSON line every few seconds.
+  bool soak = false;
+  unsigned churn = 20, burst = 500;
+  double burst_every_s = 300, burst_stay_s = 60, report_every_s = 10;
+  unsigned stall_for_ms = 30000;
 };
 
 // One synchronous connection to read the hello: the skeleton every client decodes with.
@@ -119,7 +125,17 @@ int main(int argc, char** argv) {
     ("server-pid", po::value(&o.server_pid)->default_value(0), "relay's pid, for its CPU and memory")
     ("header-only", po::bool_switch(&o.header_only), "check headers only, skip the full decode")
     ("nice", po::value(&o.nice)->default_value(o.nice),
-     "scheduling niceness of the client threads (0: compete with the relay as equals)");
+     "scheduling niceness of the client threads (0: compete with the relay as equals)")
+    ("soak", po::bool_switch(&o.soak),
+     "long run (scripts/soak.sh): churn, bursts, stalled clients that come back to see if they were cut off; "
+     "a JSON line of counters every --report-every seconds")
+    ("churn", po::value(&o.churn)->default_value(o.churn), "--soak: healthy clients leaving and joining each second")
+    ("burst", po::value(&o.burst)->default_value(o.burst), "--soak: clients joining at once every --burst-every s")
+    ("burst-every", po::value(&o.burst_every_s)->default_value(o.burst_every_s), "--soak: seconds between bursts (0: none)")
+    ("burst-stay", po::value(&o.burst_stay_s)->default_value(o.burst_stay_s), "--soak: seconds a burst's clients stay")
+    ("stall-for-ms", po::value(&o.stall_for_ms)->default_value(o.stall_for_ms),
+     "--soak: a stalled client reads again after this long, to see whether the relay cut it off")
+    ("report-every", po::value(&o.report_every_s)->default_value(o.report_every_s), "--soak: seconds between reports");
   // clang-format on
   try {
     po::variables_map vm;
@@ -154,6 +170,25 @@ int main(int argc, char** argv) {
     return 1;
   }
 
+  if (o.soak) {
+    mc::loadgen::SoakOptions so;
+    so.host = o.host;
+    so.port = o.port;
+    so.target = o.target;
+    so.clients = o.clients;
+    so.stalled_share = o.stalled_share;
+    so.stall_for = std::chrono::milliseconds(o.stall_for_ms);
+    so.churn = o.churn;
+    so.burst = o.burst;
+    so.burst_every_s = o.burst_every_s;
+    so.burst_stay_s = o.burst_stay_s;
+    so.ramp_per_s = o.ramp_per_s;
+    so.duration_s = o.duration_s;
+    so.report_every_s = o.report_every_s;
+    so.threads = o.threads;
+    so.header_only = o.header_only;
+    return mc::loadgen::run_soak(so, hello);
+  }
   const unsigned n_stalled = static_cast<unsigned>(o.clients * o.stalled_share);
   const unsigned n_slow = static_cast<unsigned>(o.clients * o.slow_share);
   std::vector<std::unique_ptr<net::io_context>> contexts;
