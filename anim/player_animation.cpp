@@ -300,7 +300,16 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // and neck share the yaw. The joint speed limit below lets it follow at
   // a human head's speed.
   const float lag = clampf(delta_deg(in.body, heading), -60.0f, 60.0f);
-  const float head_yaw = -(in.neck + lag) - a[dof::kPelvis] - a[dof::kTorso];
+  float head_yaw = -(in.neck + lag) - a[dof::kPelvis] - a[dof::kTorso];
+  // The neck and the head turn together (0.4 and 0.6 of the yaw): the turn
+  // is limited as a whole, so that the head's share keeps within the joint
+  // speed limit. Limited joint by joint, the head alone was held back on a
+  // sixth of all frames and the neck led it.
+  if (!in.reset) {
+    const float last = ctx.last_angles[dof::kNeck] + ctx.last_angles[dof::kHead];
+    const float cap = (kMaxUpperStepDeg - 1.0f) / 0.6f;
+    head_yaw = last + clampf(head_yaw - last, -cap, cap);
+  }
   a[dof::kNeck + 0] = clampf(0.4f * head_yaw, -80.0f, 80.0f);
   a[dof::kHead + 0] = clampf(head_yaw - a[dof::kNeck + 0], -80.0f, 80.0f);
   a[dof::kNeck + 1] = 0.5f * lean;  // keep the eyes level against the lean
