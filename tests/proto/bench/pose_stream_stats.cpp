@@ -68,6 +68,8 @@ struct Costs {
   std::array<double, 7> mag_count{}, mag_bits{};
   // Dof values of deltas by how far they moved since the last frame (steps): 0-9, 10-19, 20-29, 30-39, 40+.
   std::array<double, 5> step_count{}, step_bits{};
+  std::array<double, 5> leg_step_count{}, leg_step_bits{};  // the same, the legs' dofs only
+  int first_leg_dof = 1000;
   std::size_t deltas = 0, keys = 0;
 };
 
@@ -128,6 +130,10 @@ struct CostIo {
         const auto cls = static_cast<std::size_t>(std::min(dv / 10, 4));
         c.step_count[cls] += 1;
         c.step_bits[cls] += bits;
+        if (index - 3 >= c.first_leg_dof) {
+          c.leg_step_count[cls] += 1;
+          c.leg_step_bits[cls] += bits;
+        }
       }
       if (!keyframe) {
         const int m = r < 0 ? -r : r;
@@ -199,6 +205,8 @@ Costs measure(const Game& g, int keyframe_interval) {
   const int dofs = quant.dof_count();
   const int kinds = kDof0 + dofs;
   Costs c;
+  for (int d = 0, j = 0; j < static_cast<int>(g.skeleton.joints.size()); d += static_cast<int>(g.skeleton.joints[static_cast<std::size_t>(j)].dofs.size()), ++j)
+    if (g.skeleton.joints[static_cast<std::size_t>(j)].name == "r_thigh") c.first_leg_dof = d;
   c.delta_bits.assign(static_cast<std::size_t>(kinds), 0);
   c.band_bits.assign(static_cast<std::size_t>(kinds), {});
   c.odd_bits.assign(static_cast<std::size_t>(kinds), 0);
@@ -528,8 +536,11 @@ int main(int argc, char** argv) {
   for (int k = 0; k < 5; ++k) {
     std::printf("%-6s", step_name[k]);
     for (std::size_t i = 0; i < costs.size(); ++i)
-      std::printf("   %s %8.1f %8.2f B", two ? (i ? "B" : "A") : "", costs[i].step_count[static_cast<std::size_t>(k)] / double(costs[i].deltas),
-                  costs[i].step_bits[static_cast<std::size_t>(k)] / 8.0 / double(costs[i].deltas));
+      std::printf("   %s %8.1f %8.2f B (legs %6.1f %7.2f B)", two ? (i ? "B" : "A") : "",
+                  costs[i].step_count[static_cast<std::size_t>(k)] / double(costs[i].deltas),
+                  costs[i].step_bits[static_cast<std::size_t>(k)] / 8.0 / double(costs[i].deltas),
+                  costs[i].leg_step_count[static_cast<std::size_t>(k)] / double(costs[i].deltas),
+                  costs[i].leg_step_bits[static_cast<std::size_t>(k)] / 8.0 / double(costs[i].deltas));
     std::printf("\n");
   }
 
