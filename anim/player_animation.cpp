@@ -300,7 +300,16 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // and neck share the yaw. The joint speed limit below lets it follow at
   // a human head's speed.
   const float lag = clampf(delta_deg(in.body, heading), -60.0f, 60.0f);
-  const float head_yaw = -(in.neck + lag) - a[dof::kPelvis] - a[dof::kTorso];
+  float head_yaw = -(in.neck + lag) - a[dof::kPelvis] - a[dof::kTorso];
+  // The neck and the head turn together (0.4 and 0.6 of the yaw): the turn
+  // is limited as a whole, so that the head's share keeps within the joint
+  // speed limit. Limited joint by joint, the head alone was held back on a
+  // sixth of all frames and the neck led it.
+  if (!in.reset) {
+    const float last = ctx.last_angles[dof::kNeck] + ctx.last_angles[dof::kHead];
+    const float cap = (kMaxUpperStepDeg - 1.0f) / 0.6f;
+    head_yaw = last + clampf(head_yaw - last, -cap, cap);
+  }
   a[dof::kNeck + 0] = clampf(0.4f * head_yaw, -80.0f, 80.0f);
   a[dof::kHead + 0] = clampf(head_yaw - a[dof::kNeck + 0], -80.0f, 80.0f);
   a[dof::kNeck + 1] = 0.5f * lean;  // keep the eyes level against the lean
@@ -309,6 +318,10 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   float px = in.x, py = in.y, pelvis_h = lo.pelvis_height;
   FootTarget feet[2] = {lo.feet[0], lo.feet[1]};
   if (in.source != nullptr) mocap_walk(ctx, in, heading, a, pelvis_h, feet, lo.planted);
+  // The upper body's locomotion targets, before the action layer (the
+  // inertialization below looks at what the layer adds).
+  std::array<float, dof::kRHip> layer{};
+  for (int d = 0; d < dof::kRHip; ++d) layer[static_cast<std::size_t>(d)] = a[static_cast<std::size_t>(d)];
   if (act != nullptr && w > 0) {
     px += act->root_dx;
     py += act->root_dy;
@@ -319,20 +332,31 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       a[static_cast<std::size_t>(d)] += (act->angles[static_cast<std::size_t>(d)] - a[static_cast<std::size_t>(d)]) * w;
     }
   }
-  // Inertialization (Bollo 2016): a target that jumps more than a motion
-  // moves in a frame is reached through a decaying offset instead.
+  for (int d = 0; d < dof::kRHip; ++d) {
+    const auto k = static_cast<std::size_t>(d);
+    layer[k] = a[k] - layer[k];
+  }
+  // Inertialization (Bollo 2016): where what the action layer adds jumps (an
+  // action starts, ends or gives way to another), the jump is taken up by an
+  // offset that decays. Locomotion's own motion (an arm swinging at a
+  // sprint's cadence, the head turning to the gaze) is not a transition and
+  // passes as it is: blending it too lagged and damped the arm swing and
+  // shook the trunk (issue 23, recording size).
   if (in.reset) {
     ctx.blend_x.fill(0.0f);
     ctx.blend_v.fill(0.0f);
   } else {
     constexpr float kJumpDeg = 10.0f;
-    // Critically damped decay, half-life 0.1 s (y = 2 ln2 / half-life).
-    const float y = 13.862944f, e = pm::exp2(-in.dt / 0.1f);
+    // Critically damped decay, half-life 0.1 s (Holden's spring.h: y = 2 ln2
+    // / half-life, and the exact step multiplies by exp(-y dt) =
+    // 2^(-2 dt / half-life)).
+    const float y = 13.862944f, e = pm::exp2(-2.0f * in.dt / 0.1f);
     for (int d = 0; d < dof::kRHip; ++d) {
       const auto k = static_cast<std::size_t>(d);
       float& x = ctx.blend_x[k];
       float& v = ctx.blend_v[k];
-      if (std::fabs(a[k] - ctx.last_target[k]) > kJumpDeg) x = ctx.last_angles[k] - a[k];
+      const float jump = layer[k] - ctx.last_layer[k];
+      if (std::fabs(jump) > kJumpDeg) x -= jump;  // the output goes on from where it was
       const float j1 = v + x * y;
       x = e * (x + j1 * in.dt);
       v = e * (v - j1 * y * in.dt);
@@ -340,7 +364,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   }
   for (int d = 0; d < dof::kRHip; ++d) {
     const auto k = static_cast<std::size_t>(d);
-    ctx.last_target[k] = a[k];
+    ctx.last_layer[k] = layer[k];
     a[k] += ctx.blend_x[k];
   }
   const BodyFrame body(px, py, heading);

@@ -38,8 +38,9 @@ struct PlayerAnim {
   float heading = 0;           // heading of the previous frame, field deg (rate-limited)
   std::array<float, dof::kCount> last_angles{};  // previous frame's output (joint speed limit)
   // Inertialization of the upper body (pelvis, torso, head, arms): the
-  // offset still to decay and its velocity, per dof, and last frame's target.
-  std::array<float, dof::kRHip> blend_x{}, blend_v{}, last_target{};
+  // offset still to decay and its velocity, per dof, and what the action
+  // layer added to each last frame.
+  std::array<float, dof::kRHip> blend_x{}, blend_v{}, last_layer{};
   bool was_in_action = false;
   bool last_planted[2] = {false, false};
   // The action playing or about to play (kick_planner.hpp), and its bookkeeping.
