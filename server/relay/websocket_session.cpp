@@ -1,6 +1,7 @@
 #include "server/relay/websocket_session.hpp"
 
 #include <boost/asio/post.hpp>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "server/relay/log.hpp"
@@ -52,6 +53,20 @@ void WebSocketSession::schedule_flush() {
     if (flush_list_.sessions.empty()) flush_list_.sessions.swap(sessions);
   });
 }
+
+struct WebSocketSession::WriteBatch {
+  std::vector<Message> messages;
+  std::vector<net::const_buffer> buffers;
+  std::size_t bytes = 0;  // the whole batch, sent or not
+  void clear() {
+    messages.clear();
+    buffers.clear();
+    bytes = 0;
+  }
+};
+// Used only from filling a batch to the end of its non-blocking write, with
+// no handler run in between: one per thread serves all its sessions.
+thread_local WebSocketSession::WriteBatch WebSocketSession::scratch_;
 
 // A session's subscription to one channel. A new tap per switch: deliveries
 // from a channel the session has left carry an old epoch and are ignored.
@@ -318,47 +333,60 @@ void WebSocketSession::enqueue(Message m) {
   if (!writing_ && !flush_pending_) schedule_flush();
 }
 
+void WebSocketSession::fill(WriteBatch& batch) {
+  // Everything that queued during the last write goes out as one batch.
+  batch.clear();
+  queue_.take_all(batch.messages);
+  account_queue();
+  pong_queued_ = false;  // a pong queued so far is in this batch
+  for (const auto& m : batch.messages) {
+    batch.buffers.push_back(net::buffer(*m.wire));
+    batch.bytes += m.wire->size();
+  }
+}
+
 void WebSocketSession::write_next() {
   // A loop, not recursion: each batch the kernel takes at once is followed
   // by whatever queued meanwhile.
   for (;;) {
     writing_ = false;
     if (dead_ || queue_.empty()) break;
-    // Everything that queued during the last write goes out as one batch.
-    batch_.clear();
-    buffers_.clear();
-    queue_.take_all(batch_);
-    account_queue();
-    pong_queued_ = false;  // a pong queued so far is in this batch
-    batch_bytes_ = 0;
-    for (const auto& m : batch_) {
-      buffers_.push_back(net::buffer(*m.wire));
-      batch_bytes_ += m.wire->size();
-    }
     writing_ = true;
     ++stats_.writes;
     if (link_.is_tls()) {
+      pending_ = std::make_unique<WriteBatch>();
+      fill(*pending_);
       write_started_ = std::chrono::steady_clock::now();
       arm_timer(config_.stall_timeout);
-      link_.async_write_all(buffers_, [self = shared_from_this()](error_code ec, std::size_t n) {
+      link_.async_write_all(pending_->buffers, [self = shared_from_this()](error_code ec, std::size_t n) {
         self->on_tls_write(ec, n);
       });
       return;
     }
+    WriteBatch& batch = scratch_;
+    fill(batch);
     error_code ec;
-    const std::size_t sent = link_.write_now(buffers_, ec);
+    const std::size_t sent = link_.write_now(batch.buffers, ec);
     if (ec && ec != net::error::would_block && ec != net::error::try_again) {
       writing_ = false;
+      batch.clear();
       return drop_connection();
     }
-    if (sent == batch_bytes_) {
-      batch_sent(sent);
+    if (sent == batch.bytes) {
+      batch_sent(batch);
       continue;
     }
-    // The kernel took part: the rest waits for room. Only now is the stall
-    // clock started; a spectator that keeps up never arms it.
+    // The kernel took part: the rest waits for room, in a batch of the
+    // session's own (the scratch serves the next session). Only now is the
+    // stall clock started; a spectator that keeps up never arms it.
     ++stats_.partial_writes;
-    skip_sent(sent);
+    pending_ = std::make_unique<WriteBatch>();
+    pending_->messages.assign(std::make_move_iterator(batch.messages.begin()),
+                              std::make_move_iterator(batch.messages.end()));
+    pending_->buffers = batch.buffers;  // views of the moved strings: the strings stay where they were
+    pending_->bytes = batch.bytes;
+    batch.clear();
+    skip_sent(*pending_, sent);
     write_started_ = std::chrono::steady_clock::now();
     arm_timer(config_.stall_timeout);
     link_.async_wait_writable([self = shared_from_this()](error_code e) { self->on_writable(e); });
@@ -374,26 +402,28 @@ void WebSocketSession::write_next() {
   }
 }
 
-void WebSocketSession::skip_sent(std::size_t bytes) {
-  auto first = buffers_.begin();
-  while (first != buffers_.end() && bytes >= first->size()) bytes -= (first++)->size();
-  if (first != buffers_.end()) *first += bytes;
-  buffers_.erase(buffers_.begin(), first);
+void WebSocketSession::skip_sent(WriteBatch& batch, std::size_t bytes) {
+  auto& buffers = batch.buffers;
+  auto first = buffers.begin();
+  while (first != buffers.end() && bytes >= first->size()) bytes -= (first++)->size();
+  if (first != buffers.end()) *first += bytes;
+  buffers.erase(buffers.begin(), first);
 }
 
 void WebSocketSession::on_writable(error_code ec) {
   if (dead_) return;
   if (ec) return drop_connection();
-  const std::size_t left = net::buffer_size(buffers_);
-  const std::size_t sent = link_.write_now(buffers_, ec);
+  const std::size_t left = net::buffer_size(pending_->buffers);
+  const std::size_t sent = link_.write_now(pending_->buffers, ec);
   if (ec && ec != net::error::would_block && ec != net::error::try_again) return drop_connection();
   if (sent < left) {
-    skip_sent(sent);
+    skip_sent(*pending_, sent);
     link_.async_wait_writable([self = shared_from_this()](error_code e) { self->on_writable(e); });
     return;
   }
   if (timer_) timer_->cancel();
-  batch_sent(batch_bytes_);
+  batch_sent(*pending_);
+  pending_.reset();
   write_next();
 }
 
@@ -401,16 +431,17 @@ void WebSocketSession::on_tls_write(error_code ec, std::size_t) {
   if (dead_) return;
   if (ec) return drop_connection();
   if (timer_) timer_->cancel();
-  batch_sent(batch_bytes_);
+  batch_sent(*pending_);
+  pending_.reset();
   write_next();
 }
 
-void WebSocketSession::batch_sent(std::size_t bytes) {
+void WebSocketSession::batch_sent(WriteBatch& batch) {
   writing_ = false;
-  stats_.bytes_sent += bytes;
+  stats_.bytes_sent += batch.bytes;
   std::size_t messages = 0;
   std::chrono::steady_clock::time_point now{};
-  for (const auto& sent : batch_) {
+  for (const auto& sent : batch.messages) {
     if (sent.kind == Message::Kind::Session) continue;  // a pong or a close: not the broadcast
     ++messages;
     if (!sent.binary()) continue;
@@ -418,7 +449,7 @@ void WebSocketSession::batch_sent(std::size_t bytes) {
     stats_.record_delay(std::chrono::duration<double, std::milli>(now - sent.published).count());
   }
   stats_.messages_sent += messages;
-  batch_.clear();
+  batch.clear();
 }
 
 // ---- the one timer: a write stuck for the stall timeout, or a close lingering
