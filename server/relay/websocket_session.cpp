@@ -303,11 +303,10 @@ void WebSocketSession::on_timeshift(std::string_view action, const double* time)
 
 void WebSocketSession::switch_to(std::shared_ptr<Channel> channel, std::optional<Message> announce) {
   if (current_ && tap_) current_->leave(tap_.get());
-  // A session on a thread of its own (the relay's io_context per thread)
-  // is served by its channel's per-thread task; otherwise by posts.
-  auto executor = link_.get_executor();
-  auto* on_thread = executor.target<net::io_context::executor_type>();
-  tap_ = std::make_shared<Tap>(weak_from_this(), ++epoch_, on_thread ? &on_thread->context() : nullptr);
+  // A session on its io_context's thread (the relay's io_context per
+  // thread) is served by its channel's per-thread task; otherwise by posts
+  // (Channel::join decides).
+  tap_ = std::make_shared<Tap>(weak_from_this(), ++epoch_, &link_.get_executor().context());
   current_ = std::move(channel);
   // The old source's backlog is of no use now; the handshake response and
   // pongs (session messages) still go out.
