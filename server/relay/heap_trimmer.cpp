@@ -29,10 +29,13 @@ void HeapTrimmer::arm() {
   timer_.async_wait([self = shared_from_this()](boost::system::error_code ec) {
     if (ec) return;  // stopped
     const std::uint64_t now = churn(self->stats_);
-    if (now - self->churn_at_last_trim_ >= kMinChurn) {
+    const bool since_trim = now != self->churn_at_last_trim_;
+    const bool burst_over = now == self->churn_at_last_tick_;
+    if (since_trim && (burst_over || now - self->churn_at_last_trim_ >= kMinChurn)) {
       trim();
       self->churn_at_last_trim_ = now;
     }
+    self->churn_at_last_tick_ = now;
     self->arm();
   });
 }

@@ -4,8 +4,9 @@
 // long-lived sessions allocated around it: glibc keeps those holes, and
 // the RSS with them (~0.4 KB per spectator measured after 1,000 joins).
 // malloc_trim(0) returns every whole free page, holes included; it walks
-// the heap, so it runs only after enough connections opened or closed, at
-// most once a period, on one I/O thread.
+// the heap, so it runs at most once a period, on one I/O thread: when a
+// burst of connections (opened or closed) has ended, or during a long one
+// once enough connections have come and gone.
 #pragma once
 
 #include <boost/asio/io_context.hpp>
@@ -20,8 +21,8 @@ namespace mc::relay {
 
 class HeapTrimmer : public std::enable_shared_from_this<HeapTrimmer> {
  public:
-  // Fewer connections than this since the last trim leave too few holes to
-  // be worth a walk over the heap.
+  // While connections keep coming and going, a trim waits for this many
+  // since the last one.
   static constexpr std::uint64_t kMinChurn = 256;
   static constexpr std::chrono::seconds kPeriod{5};
 
@@ -41,6 +42,7 @@ class HeapTrimmer : public std::enable_shared_from_this<HeapTrimmer> {
   boost::asio::steady_timer timer_;
   const RelayStats& stats_;
   std::uint64_t churn_at_last_trim_ = 0;
+  std::uint64_t churn_at_last_tick_ = 0;
 };
 
 }  // namespace mc::relay
