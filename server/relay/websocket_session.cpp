@@ -115,7 +115,7 @@ WebSocketSession::WebSocketSession(SpectatorLink&& link, std::shared_ptr<Channel
 }
 
 WebSocketSession::~WebSocketSession() {
-  if (sessions_) sessions_->remove(this);
+  if (sessions_) sessions_->remove(in_set_);
   --stats_.clients;
   stats_.queued_bytes -= accounted_queue_bytes_;
   stats_.frames_dropped += queue_.dropped();
@@ -156,7 +156,7 @@ void WebSocketSession::close(std::uint16_t code, const std::string& reason) {
 }
 
 void WebSocketSession::run(std::string handshake_response, std::string_view early) {
-  if (sessions_) sessions_->add(shared_from_this());
+  if (sessions_) sessions_->add(in_set_);
   if (link_.is_tls()) tls_in_ = std::make_unique<char[]>(kTlsReadBuffer);
   open_ = true;
   // The 101 response goes first; then, on this thread and before any later

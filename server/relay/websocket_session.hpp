@@ -115,6 +115,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   std::shared_ptr<ReplaySource> replay_;  // a recording's replay, or the current time shift
   ReplayFactory* timeshift_factory_;
   SessionSet* sessions_;                  // for a graceful stop; may be nullptr
+  SessionSet::Hook in_set_{this};         // this session's place in *sessions_
   std::int64_t accounted_queue_bytes_ = 0;  // this session's share of stats_.queued_bytes
   // Made when the client first sends something: most spectators never do,
   // and then hold no reader at all.
