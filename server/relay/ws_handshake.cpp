@@ -1,9 +1,12 @@
 #include "server/relay/ws_handshake.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cctype>
 #include <cstdint>
+
+// Beast's own SHA-1 and base64, the ones its websocket::stream handshake uses.
+#include <boost/beast/core/detail/base64.hpp>
+#include <boost/beast/core/detail/sha1.hpp>
 
 namespace http = boost::beast::http;
 
@@ -48,53 +51,20 @@ HandshakeResult refuse(http::status status, std::string why) {
 }  // namespace
 
 std::array<unsigned char, 20> sha1(std::string_view data) {
-  std::uint32_t h[5] = {0x67452301, 0xEFCDAB89, 0x98BADCFE, 0x10325476, 0xC3D2E1F0};
-  auto block = [&h](const unsigned char* p) {
-    std::uint32_t w[80];
-    for (int i = 0; i < 16; ++i)
-      w[i] = std::uint32_t{p[4 * i]} << 24 | std::uint32_t{p[4 * i + 1]} << 16 | std::uint32_t{p[4 * i + 2]} << 8 |
-             std::uint32_t{p[4 * i + 3]};
-    for (int i = 16; i < 80; ++i) w[i] = std::rotl(w[i - 3] ^ w[i - 8] ^ w[i - 14] ^ w[i - 16], 1);
-    std::uint32_t a = h[0], b = h[1], c = h[2], d = h[3], e = h[4];
-    for (int i = 0; i < 80; ++i) {
-      std::uint32_t f, k;
-      if (i < 20) f = (b & c) | (~b & d), k = 0x5A827999;
-      else if (i < 40) f = b ^ c ^ d, k = 0x6ED9EBA1;
-      else if (i < 60) f = (b & c) | (b & d) | (c & d), k = 0x8F1BBCDC;
-      else f = b ^ c ^ d, k = 0xCA62C1D6;
-      const std::uint32_t t = std::rotl(a, 5) + f + e + k + w[i];
-      e = d, d = c, c = std::rotl(b, 30), b = a, a = t;
-    }
-    h[0] += a, h[1] += b, h[2] += c, h[3] += d, h[4] += e;
-  };
-  const auto* p = reinterpret_cast<const unsigned char*>(data.data());
-  std::size_t n = data.size();
-  const std::uint64_t bits = std::uint64_t{n} * 8;
-  for (; n >= 64; n -= 64, p += 64) block(p);
-  // The tail, the 0x80 marker and the length in bits: one or two blocks.
-  unsigned char last[128] = {};
-  std::copy(p, p + n, last);
-  last[n] = 0x80;
-  const std::size_t end = n < 56 ? 64 : 128;
-  for (int i = 0; i < 8; ++i) last[end - 1 - i] = static_cast<unsigned char>(bits >> (8 * i));
-  for (std::size_t at = 0; at < end; at += 64) block(last + at);
+  namespace bd = boost::beast::detail;
+  bd::sha1_context ctx;
+  bd::init(ctx);
+  bd::update(ctx, data.data(), data.size());
   std::array<unsigned char, 20> out;
-  for (int i = 0; i < 20; ++i) out[i] = static_cast<unsigned char>(h[i / 4] >> (24 - 8 * (i % 4)));
+  static_assert(bd::sha1_context::digest_size == 20);
+  bd::finish(ctx, out.data());
   return out;
 }
 
 std::string base64(const unsigned char* data, std::size_t n) {
-  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve(4 * ((n + 2) / 3));
-  for (std::size_t i = 0; i < n; i += 3) {
-    const std::uint32_t v = std::uint32_t{data[i]} << 16 | (i + 1 < n ? std::uint32_t{data[i + 1]} << 8 : 0) |
-                            (i + 2 < n ? std::uint32_t{data[i + 2]} : 0);
-    out.push_back(kAlphabet[v >> 18 & 63]);
-    out.push_back(kAlphabet[v >> 12 & 63]);
-    out.push_back(i + 1 < n ? kAlphabet[v >> 6 & 63] : '=');
-    out.push_back(i + 2 < n ? kAlphabet[v & 63] : '=');
-  }
+  namespace b64 = boost::beast::detail::base64;
+  std::string out(b64::encoded_size(n), '\0');
+  out.resize(b64::encode(out.data(), data, n));
   return out;
 }
 

@@ -23,8 +23,9 @@ struct HandshakeResult {
 // Sec-WebSocket-Accept for a client's Sec-WebSocket-Key: base64(SHA-1(key + GUID)).
 std::string websocket_accept(std::string_view client_key);
 
-// SHA-1 (FIPS 180-4) and base64 (RFC 4648), for the accept key only. Our
-// own, not OpenSSL's: OpenSSL 3's SHA1() starts its provider machinery on
+// SHA-1 (FIPS 180-4) and base64 (RFC 4648), for the accept key only:
+// Beast's (boost/beast/core/detail), the code its own websocket handshake
+// runs, not OpenSSL's: OpenSSL 3's SHA1() starts its provider machinery on
 // first use, which touches ~2 MB of libcrypto's pages, resident for the
 // process's life, in a relay that has no other use for libcrypto without TLS.
 std::array<unsigned char, 20> sha1(std::string_view data);
