@@ -210,7 +210,13 @@ void HttpSession::upgrade(http::request<http::string_body>&& req) {
   // connection itself on the bare socket (or the TLS stream).
   stream_.tcp().expires_never();
   const auto early = beast::buffers_to_string(buffer_.data());
-  SpectatorLink link = stream_.is_tls() ? SpectatorLink(stream_.release_tls()) : SpectatorLink(stream_.release_socket());
+  // Every connection runs on one of the relay's io_contexts (the listener
+  // hands each to one).
+  const auto executor = stream_.get_executor();
+  const auto* home = executor.target<net::io_context::executor_type>();
+  if (!home) return send(text_response(req, http::status::internal_server_error, "not on an I/O thread\n"));
+  SpectatorLink link = stream_.is_tls() ? SpectatorLink(stream_.release_tls(), *home)
+                                        : SpectatorLink(stream_.release_socket(), *home);
   std::make_shared<WebSocketSession>(std::move(link), std::move(channel), context_.config, context_.stats,
                                      std::move(ticket), std::move(replay), context_.replays, context_.sessions)
       ->run(std::move(handshake.response), early);

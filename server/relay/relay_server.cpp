@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "server/relay/heap_trimmer.hpp"
 #include "server/relay/listener.hpp"
 #include "server/relay/log.hpp"
 #include "server/relay/websocket_session.hpp"
@@ -49,6 +50,8 @@ bool RelayServer::start(std::string& error) {
   listener_ = std::make_shared<Listener>(iocs, context_);
   if (!listener_->open({address, config_.port}, error)) return false;
   listener_->run();
+  trimmer_ = std::make_shared<HeapTrimmer>(*iocs_.front(), stats_);
+  trimmer_->start();
   for (auto& ioc : iocs_) threads_.emplace_back([&ioc = *ioc] { ioc.run(); });
   return true;
 }
@@ -98,6 +101,7 @@ std::uint16_t RelayServer::port() const { return listener_ ? listener_->port() :
 void RelayServer::stop(std::chrono::milliseconds grace) {
   if (threads_.empty()) return;
   listener_->close();
+  if (trimmer_) trimmer_->stop();
   // Every spectator, live or replaying: a close frame each.
   for (const auto& s : sessions_.snapshot()) s->shutdown();
   for (const auto& ch : channels_->all()) ch->shutdown_subscribers();

@@ -22,6 +22,7 @@
 namespace mc::relay {
 
 class Listener;
+class HeapTrimmer;
 
 class RelayServer {
  public:
@@ -60,6 +61,7 @@ class RelayServer {
   std::vector<std::unique_ptr<boost::asio::io_context>> iocs_;
   std::vector<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> guards_;
   std::shared_ptr<Listener> listener_;
+  std::shared_ptr<HeapTrimmer> trimmer_;  // free heap pages back after connect and disconnect bursts
   std::vector<std::thread> threads_;
 };
 

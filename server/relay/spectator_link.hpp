@@ -7,6 +7,9 @@
 // asynchronous reads and writes (it needs its own buffers anyway).
 #pragma once
 
+#include <unistd.h>
+
+#include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/write.hpp>
 #include <memory>
@@ -19,15 +22,19 @@ namespace mc::relay {
 class SpectatorLink {
  public:
   using tls_stream = Transport::tls_stream;
-  using socket_type = boost::asio::ip::tcp::socket;
+  // The socket is typed on its thread's io_context executor, not on
+  // any_io_executor: that is ~40 bytes less in the socket and as many in
+  // every pending wait (its handler keeps a copy of the executor), per
+  // spectator. The relay runs every connection on an io_context.
+  using executor_type = boost::asio::io_context::executor_type;
+  using socket_type = boost::asio::basic_stream_socket<boost::asio::ip::tcp, executor_type>;
 
-  explicit SpectatorLink(socket_type&& socket) : socket_(std::move(socket)) {}
-  explicit SpectatorLink(std::unique_ptr<tls_stream> tls) : socket_(tls->get_executor()), tls_(std::move(tls)) {}
+  // `home`: the io_context executor the connection runs on.
+  SpectatorLink(boost::asio::ip::tcp::socket&& socket, executor_type home) : socket_(rebind(std::move(socket), home)) {}
+  SpectatorLink(std::unique_ptr<tls_stream> tls, executor_type home) : socket_(home), tls_(std::move(tls)) {}
 
-  boost::asio::any_io_executor get_executor() { return socket_.get_executor(); }
+  executor_type get_executor() { return socket_.get_executor(); }
   bool is_tls() const { return tls_ != nullptr; }
-  // The TCP socket under everything.
-  socket_type& socket() { return tls_ ? tls_->next_layer().socket() : socket_; }
 
   // Plain TCP: what the kernel takes or has now, without blocking (0 with
   // would_block when it has no room or no bytes).
@@ -60,15 +67,32 @@ class SpectatorLink {
   // After our close frame: no more bytes from us (TLS: the frame is the goodbye).
   void shutdown_send() {
     boost::system::error_code ignored;
-    socket().shutdown(socket_type::shutdown_send, ignored);
+    if (tls_) tls_->next_layer().socket().shutdown(socket_type::shutdown_send, ignored);
+    else socket_.shutdown(socket_type::shutdown_send, ignored);
   }
   // Ends the connection at once (a stalled client: no goodbye can reach it).
   void close() {
     boost::system::error_code ignored;
-    socket().close(ignored);
+    if (tls_) tls_->next_layer().socket().close(ignored);
+    else socket_.close(ignored);
   }
 
  private:
+  // The same connection (the same descriptor, its options kept) on a socket
+  // of executor_type. A socket that cannot move stays closed: the session
+  // then ends on its first read or write.
+  static socket_type rebind(boost::asio::ip::tcp::socket&& from, executor_type home) {
+    socket_type to(home);
+    boost::system::error_code ec;
+    const auto protocol = from.local_endpoint(ec).protocol();
+    if (ec) return to;
+    const auto fd = from.release(ec);
+    if (ec) return to;
+    to.assign(protocol, fd, ec);
+    if (ec) ::close(fd);
+    return to;
+  }
+
   socket_type socket_;  // plain TCP; for TLS an unused closed socket of the same executor
   std::unique_ptr<tls_stream> tls_;
 };

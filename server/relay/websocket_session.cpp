@@ -1,6 +1,7 @@
 #include "server/relay/websocket_session.hpp"
 
 #include <boost/asio/post.hpp>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "server/relay/log.hpp"
@@ -54,6 +55,20 @@ void WebSocketSession::schedule_flush() {
   });
 }
 
+struct WebSocketSession::WriteBatch {
+  std::vector<Message> messages;
+  std::vector<net::const_buffer> buffers;
+  std::size_t bytes = 0;  // the whole batch, sent or not
+  void clear() {
+    messages.clear();
+    buffers.clear();
+    bytes = 0;
+  }
+};
+// Used only from filling a batch to the end of its non-blocking write, with
+// no handler run in between: one per thread serves all its sessions.
+thread_local WebSocketSession::WriteBatch WebSocketSession::scratch_;
+
 // A session's subscription to one channel. A new tap per switch: deliveries
 // from a channel the session has left carry an old epoch and are ignored.
 class WebSocketSession::Tap : public Subscriber {
@@ -101,7 +116,7 @@ WebSocketSession::WebSocketSession(SpectatorLink&& link, std::shared_ptr<Channel
 }
 
 WebSocketSession::~WebSocketSession() {
-  if (sessions_) sessions_->remove(this);
+  if (sessions_) sessions_->remove(in_set_);
   --stats_.clients;
   stats_.queued_bytes -= accounted_queue_bytes_;
   stats_.frames_dropped += queue_.dropped();
@@ -142,7 +157,7 @@ void WebSocketSession::close(std::uint16_t code, const std::string& reason) {
 }
 
 void WebSocketSession::run(std::string handshake_response, std::string_view early) {
-  if (sessions_) sessions_->add(shared_from_this());
+  if (sessions_) sessions_->add(in_set_);
   if (link_.is_tls()) tls_in_ = std::make_unique<char[]>(kTlsReadBuffer);
   open_ = true;
   // The 101 response goes first; then, on this thread and before any later
@@ -285,11 +300,10 @@ void WebSocketSession::on_timeshift(std::string_view action, const double* time)
 
 void WebSocketSession::switch_to(std::shared_ptr<Channel> channel, std::optional<Message> announce) {
   if (current_ && tap_) current_->leave(tap_.get());
-  // A session on a thread of its own (the relay's io_context per thread)
-  // is served by its channel's per-thread task; otherwise by posts.
-  auto executor = link_.get_executor();
-  auto* on_thread = executor.target<net::io_context::executor_type>();
-  tap_ = std::make_shared<Tap>(weak_from_this(), ++epoch_, on_thread ? &on_thread->context() : nullptr);
+  // A session on its io_context's thread (the relay's io_context per
+  // thread) is served by its channel's per-thread task; otherwise by posts
+  // (Channel::join decides).
+  tap_ = std::make_shared<Tap>(weak_from_this(), ++epoch_, &link_.get_executor().context());
   current_ = std::move(channel);
   // The old source's backlog is of no use now; the handshake response and
   // pongs (session messages) still go out.
@@ -315,47 +329,60 @@ void WebSocketSession::enqueue(Message m) {
   if (!writing_ && !flush_pending_) schedule_flush();
 }
 
+void WebSocketSession::fill(WriteBatch& batch) {
+  // Everything that queued during the last write goes out as one batch.
+  batch.clear();
+  queue_.take_all(batch.messages);
+  account_queue();
+  pong_queued_ = false;  // a pong queued so far is in this batch
+  for (const auto& m : batch.messages) {
+    batch.buffers.push_back(net::buffer(*m.wire));
+    batch.bytes += m.wire->size();
+  }
+}
+
 void WebSocketSession::write_next() {
   // A loop, not recursion: each batch the kernel takes at once is followed
   // by whatever queued meanwhile.
   for (;;) {
     writing_ = false;
     if (dead_ || queue_.empty()) break;
-    // Everything that queued during the last write goes out as one batch.
-    batch_.clear();
-    buffers_.clear();
-    queue_.take_all(batch_);
-    account_queue();
-    pong_queued_ = false;  // a pong queued so far is in this batch
-    batch_bytes_ = 0;
-    for (const auto& m : batch_) {
-      buffers_.push_back(net::buffer(*m.wire));
-      batch_bytes_ += m.wire->size();
-    }
     writing_ = true;
     ++stats_.writes;
     if (link_.is_tls()) {
+      pending_ = std::make_unique<WriteBatch>();
+      fill(*pending_);
       write_started_ = std::chrono::steady_clock::now();
       arm_timer(config_.stall_timeout);
-      link_.async_write_all(buffers_, [self = shared_from_this()](error_code ec, std::size_t n) {
+      link_.async_write_all(pending_->buffers, [self = shared_from_this()](error_code ec, std::size_t n) {
         self->on_tls_write(ec, n);
       });
       return;
     }
+    WriteBatch& batch = scratch_;
+    fill(batch);
     error_code ec;
-    const std::size_t sent = link_.write_now(buffers_, ec);
+    const std::size_t sent = link_.write_now(batch.buffers, ec);
     if (ec && ec != net::error::would_block && ec != net::error::try_again) {
       writing_ = false;
+      batch.clear();
       return drop_connection();
     }
-    if (sent == batch_bytes_) {
-      batch_sent(sent);
+    if (sent == batch.bytes) {
+      batch_sent(batch);
       continue;
     }
-    // The kernel took part: the rest waits for room. Only now is the stall
-    // clock started; a spectator that keeps up never arms it.
+    // The kernel took part: the rest waits for room, in a batch of the
+    // session's own (the scratch serves the next session). Only now is the
+    // stall clock started; a spectator that keeps up never arms it.
     ++stats_.partial_writes;
-    skip_sent(sent);
+    pending_ = std::make_unique<WriteBatch>();
+    pending_->messages.assign(std::make_move_iterator(batch.messages.begin()),
+                              std::make_move_iterator(batch.messages.end()));
+    pending_->buffers = batch.buffers;  // views of the moved strings: the strings stay where they were
+    pending_->bytes = batch.bytes;
+    batch.clear();
+    skip_sent(*pending_, sent);
     write_started_ = std::chrono::steady_clock::now();
     arm_timer(config_.stall_timeout);
     link_.async_wait_writable([self = shared_from_this()](error_code e) { self->on_writable(e); });
@@ -371,26 +398,28 @@ void WebSocketSession::write_next() {
   }
 }
 
-void WebSocketSession::skip_sent(std::size_t bytes) {
-  auto first = buffers_.begin();
-  while (first != buffers_.end() && bytes >= first->size()) bytes -= (first++)->size();
-  if (first != buffers_.end()) *first += bytes;
-  buffers_.erase(buffers_.begin(), first);
+void WebSocketSession::skip_sent(WriteBatch& batch, std::size_t bytes) {
+  auto& buffers = batch.buffers;
+  auto first = buffers.begin();
+  while (first != buffers.end() && bytes >= first->size()) bytes -= (first++)->size();
+  if (first != buffers.end()) *first += bytes;
+  buffers.erase(buffers.begin(), first);
 }
 
 void WebSocketSession::on_writable(error_code ec) {
   if (dead_) return;
   if (ec) return drop_connection();
-  const std::size_t left = net::buffer_size(buffers_);
-  const std::size_t sent = link_.write_now(buffers_, ec);
+  const std::size_t left = net::buffer_size(pending_->buffers);
+  const std::size_t sent = link_.write_now(pending_->buffers, ec);
   if (ec && ec != net::error::would_block && ec != net::error::try_again) return drop_connection();
   if (sent < left) {
-    skip_sent(sent);
+    skip_sent(*pending_, sent);
     link_.async_wait_writable([self = shared_from_this()](error_code e) { self->on_writable(e); });
     return;
   }
   if (timer_) timer_->cancel();
-  batch_sent(batch_bytes_);
+  batch_sent(*pending_);
+  pending_.reset();
   write_next();
 }
 
@@ -398,16 +427,17 @@ void WebSocketSession::on_tls_write(error_code ec, std::size_t) {
   if (dead_) return;
   if (ec) return drop_connection();
   if (timer_) timer_->cancel();
-  batch_sent(batch_bytes_);
+  batch_sent(*pending_);
+  pending_.reset();
   write_next();
 }
 
-void WebSocketSession::batch_sent(std::size_t bytes) {
+void WebSocketSession::batch_sent(WriteBatch& batch) {
   writing_ = false;
-  stats_.bytes_sent += bytes;
+  stats_.bytes_sent += batch.bytes;
   std::size_t messages = 0;
   std::chrono::steady_clock::time_point now{};
-  for (const auto& sent : batch_) {
+  for (const auto& sent : batch.messages) {
     if (sent.kind == Message::Kind::Session) continue;  // a pong or a close: not the broadcast
     ++messages;
     if (!sent.binary()) continue;
@@ -415,7 +445,7 @@ void WebSocketSession::batch_sent(std::size_t bytes) {
     stats_.record_delay(std::chrono::duration<double, std::milli>(now - sent.published).count());
   }
   stats_.messages_sent += messages;
-  batch_.clear();
+  batch.clear();
 }
 
 // ---- the one timer: a write stuck for the stall timeout, or a close lingering

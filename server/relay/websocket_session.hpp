@@ -70,6 +70,13 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   class Tap;
   struct FlushList;
   static thread_local FlushList flush_list_;
+  // One write: its messages (which own the bytes) and what is left of its
+  // gathered buffers. A write the kernel takes at once, nearly every write
+  // on plain TCP, is built in its thread's scratch batch; only a write that
+  // must wait (TLS, or a kernel buffer with no room) gets a batch of its own.
+  struct WriteBatch;
+  static thread_local WriteBatch scratch_;
+  void fill(WriteBatch& batch);
   void schedule_flush();
 
   void start_read();
@@ -87,8 +94,8 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   void write_next();
   void on_writable(boost::system::error_code ec);
   void on_tls_write(boost::system::error_code ec, std::size_t bytes);
-  void batch_sent(std::size_t bytes);
-  void skip_sent(std::size_t bytes);
+  void batch_sent(WriteBatch& batch);
+  static void skip_sent(WriteBatch& batch, std::size_t bytes);
   void arm_timer(std::chrono::steady_clock::duration after);
   void on_timer(boost::system::error_code ec);
   void close_with(CloseCode code, std::string_view reason);
@@ -108,15 +115,16 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   std::shared_ptr<ReplaySource> replay_;  // a recording's replay, or the current time shift
   ReplayFactory* timeshift_factory_;
   SessionSet* sessions_;                  // for a graceful stop; may be nullptr
+  SessionSet::Hook in_set_{this};         // this session's place in *sessions_
   std::int64_t accounted_queue_bytes_ = 0;  // this session's share of stats_.queued_bytes
   // Made when the client first sends something: most spectators never do,
   // and then hold no reader at all.
   std::unique_ptr<WsInbound> inbound_;
   std::unique_ptr<char[]> tls_in_;  // TLS only: the decrypted bytes' buffer
   SendQueue queue_;
-  std::vector<Message> batch_;  // the write in flight: owns the bytes of...
-  std::vector<boost::asio::const_buffer> buffers_;  // ...what is left of its gathered buffers
-  std::size_t batch_bytes_ = 0;  // the batch's whole size
+  // The write waiting for the kernel (or TLS): made for that write, freed
+  // when it is out, so that a spectator that keeps up holds no batch at all.
+  std::unique_ptr<WriteBatch> pending_;
   std::chrono::steady_clock::time_point write_started_{};
   // Made and armed only while a write waits for the kernel (stall check) or
   // while a close lingers: a healthy spectator has no timer at all.

@@ -1,10 +1,12 @@
 #include "server/relay/ws_handshake.hpp"
 
-#include <openssl/evp.h>
-#include <openssl/sha.h>
-
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
+
+// Beast's own SHA-1 and base64, the ones its websocket::stream handshake uses.
+#include <boost/beast/core/detail/base64.hpp>
+#include <boost/beast/core/detail/sha1.hpp>
 
 namespace http = boost::beast::http;
 
@@ -12,13 +14,6 @@ namespace mc::relay {
 namespace {
 
 std::string_view sv(boost::beast::string_view s) { return {s.data(), s.size()}; }
-
-std::string base64(const unsigned char* data, std::size_t n) {
-  std::string out(4 * ((n + 2) / 3) + 1, '\0');
-  const int len = EVP_EncodeBlock(reinterpret_cast<unsigned char*>(out.data()), data, static_cast<int>(n));
-  out.resize(static_cast<std::size_t>(len));
-  return out;
-}
 
 // True when the comma-separated header value holds `token` (any case).
 bool has_token(std::string_view value, std::string_view token) {
@@ -55,13 +50,30 @@ HandshakeResult refuse(http::status status, std::string why) {
 
 }  // namespace
 
+std::array<unsigned char, 20> sha1(std::string_view data) {
+  namespace bd = boost::beast::detail;
+  bd::sha1_context ctx;
+  bd::init(ctx);
+  bd::update(ctx, data.data(), data.size());
+  std::array<unsigned char, 20> out;
+  static_assert(bd::sha1_context::digest_size == 20);
+  bd::finish(ctx, out.data());
+  return out;
+}
+
+std::string base64(const unsigned char* data, std::size_t n) {
+  namespace b64 = boost::beast::detail::base64;
+  std::string out(b64::encoded_size(n), '\0');
+  out.resize(b64::encode(out.data(), data, n));
+  return out;
+}
+
 std::string websocket_accept(std::string_view client_key) {
   static constexpr std::string_view kGuid = "258EAFA5-E914-47DA-95CA-C5AB0DC85B11";
   std::string input(client_key);
   input += kGuid;
-  unsigned char digest[SHA_DIGEST_LENGTH];
-  SHA1(reinterpret_cast<const unsigned char*>(input.data()), input.size(), digest);
-  return base64(digest, sizeof digest);
+  const auto digest = sha1(input);
+  return base64(digest.data(), digest.size());
 }
 
 HandshakeResult accept_upgrade(const http::request<http::string_body>& req) {

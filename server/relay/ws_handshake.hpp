@@ -5,8 +5,10 @@
 // bytes are visible and tested.
 #pragma once
 
+#include <array>
 #include <boost/beast/http.hpp>
 #include <string>
+#include <string_view>
 
 namespace mc::relay {
 
@@ -20,6 +22,14 @@ struct HandshakeResult {
 
 // Sec-WebSocket-Accept for a client's Sec-WebSocket-Key: base64(SHA-1(key + GUID)).
 std::string websocket_accept(std::string_view client_key);
+
+// SHA-1 (FIPS 180-4) and base64 (RFC 4648), for the accept key only:
+// Beast's (boost/beast/core/detail), the code its own websocket handshake
+// runs, not OpenSSL's: OpenSSL 3's SHA1() starts its provider machinery on
+// first use, which touches ~2 MB of libcrypto's pages, resident for the
+// process's life, in a relay that has no other use for libcrypto without TLS.
+std::array<unsigned char, 20> sha1(std::string_view data);
+std::string base64(const unsigned char* data, std::size_t n);
 
 // Checks `req` (GET, HTTP/1.1, Upgrade: websocket, Connection: upgrade, a
 // 16-byte base64 key, version 13). No subprotocol and no extension is

@@ -51,5 +51,27 @@ TEST(SendQueue, ControlMessagesAreNeverDropped) {
   EXPECT_EQ(q.size(), 2u);
 }
 
+TEST(SendQueue, ACatchUpBurstsRoomIsGivenBack) {
+  // A joiner's catch-up queues many messages at once; once they are taken,
+  // an idle spectator must not keep room for all of them.
+  SendQueue q(1 << 20);
+  for (int i = 0; i < 30; ++i) q.push(delta(10));
+  std::vector<Message> batch;
+  q.take_all(batch);
+  EXPECT_EQ(batch.size(), 30u);
+  EXPECT_LE(q.room(), SendQueue::kKeptRoom);
+  // The usual write (one frame) keeps its room: no allocation per frame.
+  q.push(delta(10));
+  batch.clear();
+  q.take_all(batch);
+  EXPECT_EQ(q.room(), 1u);
+  // Appended, never swapped: the batch's own room stays with the batch.
+  const auto batch_room = batch.capacity();
+  q.push(delta(10));
+  q.take_all(batch);
+  EXPECT_EQ(batch.size(), 2u);
+  EXPECT_GE(batch.capacity(), batch_room);
+}
+
 }  // namespace
 }  // namespace mc::relay

@@ -22,6 +22,33 @@ TEST(WsHandshake, AcceptKeyIsRfc6455s) {
   EXPECT_EQ(websocket_accept("dGhlIHNhbXBsZSBub25jZQ=="), "s3pPLMBiTxaQ9kYGzzhZRbK+xOo=");
 }
 
+std::string hex(const std::array<unsigned char, 20>& d) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string s;
+  for (unsigned char c : d) (s += kHex[c >> 4]) += kHex[c & 15];
+  return s;
+}
+
+TEST(WsHandshake, Sha1MatchesFips180Vectors) {
+  EXPECT_EQ(hex(sha1("")), "da39a3ee5e6b4b0d3255bfef95601890afd80709");
+  EXPECT_EQ(hex(sha1("abc")), "a9993e364706816aba3e25717850c26c9cd0d89d");
+  // 56 bytes: the length no longer fits the first padding block.
+  EXPECT_EQ(hex(sha1("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq")),
+            "84983e441c3bd26ebaae4aa1f95129e5e54670f1");
+  EXPECT_EQ(hex(sha1(std::string(1000000, 'a'))), "34aa973cd4c4daa4f61eeb2bdbad27316534016f");
+  // 64 bytes: exactly one block before the padding.
+  EXPECT_EQ(hex(sha1(std::string(64, 'a'))), "0098ba824b5c16427bd7a1122a5a442a25ec644d");
+}
+
+TEST(WsHandshake, Base64PadsAsRfc4648Says) {
+  const auto* b = reinterpret_cast<const unsigned char*>("foobar");
+  EXPECT_EQ(base64(b, 0), "");
+  EXPECT_EQ(base64(b, 1), "Zg==");
+  EXPECT_EQ(base64(b, 2), "Zm8=");
+  EXPECT_EQ(base64(b, 3), "Zm9v");
+  EXPECT_EQ(base64(b, 6), "Zm9vYmFy");
+}
+
 TEST(WsHandshake, AnswersAValidUpgradeWith101) {
   const auto r = accept_upgrade(upgrade_request());
   ASSERT_TRUE(r.ok) << r.error;
