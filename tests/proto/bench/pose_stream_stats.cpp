@@ -12,7 +12,8 @@
 // viewer sees as a twitch.
 //
 //   proto_pose_stream_stats [--keyframe-interval F] [--no-partners] [--partner-study]
-//                           [--trace SLOT FROM TO DOF,DOF..] [--contacts PATH] FRAMES [FRAMES_B]
+//                           [--trace SLOT FROM TO DOF,DOF..] [--contacts PATH [--contacts-measure-only]]
+//                           FRAMES [FRAMES_B]
 // Also: zigzag per dof (the second difference changing sign on consecutive
 // frames, both at least 4 steps: a 5-10 Hz shake, which smooth motion at
 // 20 Hz rarely makes), the residuals by magnitude, the values by how far
@@ -30,7 +31,9 @@
 // the left foot the right foot's flag now), booked under meta, and the
 // legs' dofs of a planted foot coded in their own adaptive models (the
 // swinging legs keep the codec's). Both sets reset at keyframes, as the
-// codec's do.
+// codec's do. It also prints the legs' bits by speed band, swinging and
+// planted; --contacts-measure-only keeps the codec's models for all legs
+// (the legs' bits as the codec spends them, the contact bits still counted).
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -65,6 +68,8 @@ struct ContactStudy {
   std::array<Prob, 16> bit_ctx{};
   int first_leg_dof = 1000;
   double bits = 0;  // the contact bits, all deltas
+  double leg_bits[5][2] = {}, leg_n[5][2] = {};  // [speed band][planted]: bits and leg-frames of the deltas
+  bool split = true;  // false: --contacts-measure-only
   void reset() {
     for (auto& m : planted_legs) m.reset();
     bit_ctx.fill(kProbInit);
@@ -148,10 +153,17 @@ struct CostIo {
     {
       SignedModel* model = &m;
       const int d = index - 3, leg = g_contacts.first_leg_dof;
-      if (g_contacts.now != nullptr && !keyframe && player >= 0 && d >= leg && d < leg + 12 &&
-          ((g_contacts.now[static_cast<std::size_t>(player)] >> (d < leg + 6 ? 0 : 1)) & 1) != 0)
+      const bool pl = g_contacts.now != nullptr && player >= 0 && d >= leg && d < leg + 12 &&
+          ((g_contacts.now[static_cast<std::size_t>(player)] >> (d < leg + 6 ? 0 : 1)) & 1) != 0;
+      if (g_contacts.split && pl && !keyframe)
         model = &g_contacts.planted_legs[static_cast<std::size_t>(d)];
+      const double b0 = bits;
       signed_cost(*model, r, zctx, act);
+      if (g_contacts.now != nullptr && !keyframe && player >= 0 && d >= leg && d < leg + 12) {
+        const int bd = band[static_cast<std::size_t>(player)];
+        g_contacts.leg_bits[bd][pl ? 1 : 0] += bits - b0;
+        g_contacts.leg_n[bd][pl ? 1 : 0] += 1.0 / 6.0;
+      }
     }
     if (player < 0) {
       book(kBall);
@@ -465,6 +477,7 @@ int main(int argc, char** argv) {
     else if (a == "--partner-study") g_study = true;
     else if (a == "--no-partners") g_no_partners = true;
     else if (a == "--contacts" && i + 1 < argc) contacts_path = argv[++i];
+    else if (a == "--contacts-measure-only") g_contacts.split = false;
     else if (a == "--trace" && i + 4 < argc) {
       trace_slot = std::stoi(argv[++i]);
       trace_from = std::stoi(argv[++i]);
@@ -476,7 +489,7 @@ int main(int argc, char** argv) {
   if (files.empty() || files.size() > 2 || (!contacts_path.empty() && files.size() != 1)) {
     std::fprintf(stderr,
                  "usage: %s [--keyframe-interval F] [--no-partners] [--partner-study] [--trace SLOT FROM TO DOFS]\n"
-                 "       [--contacts PATH] FRAMES [FRAMES_B]\n",
+                 "       [--contacts PATH [--contacts-measure-only]] FRAMES [FRAMES_B]\n",
                  argv[0]);
     return 2;
   }
@@ -575,6 +588,16 @@ int main(int argc, char** argv) {
   if (g_contacts.on)
     std::printf("(--contacts: meta holds the contact bits, %.2f B a delta frame; the planted legs' dofs are coded apart)\n",
                 g_contacts.bits / 8.0 / double(costs[0].deltas));
+  if (g_contacts.on) {
+    std::printf("legs by speed band, swinging and planted: leg-frames, bits a leg-frame, B a delta frame\n");
+    for (int b = 0; b < kBands; ++b) {
+      const auto& n = g_contacts.leg_n[b];
+      const auto& bits = g_contacts.leg_bits[b];
+      std::printf("%-9s swinging %7.0f %6.2f %6.2f   planted %7.0f %6.2f %6.2f\n", kBandName[b], n[0],
+                  bits[0] / std::max(1.0, n[0]), bits[0] / 8.0 / double(costs[0].deltas), n[1],
+                  bits[1] / std::max(1.0, n[1]), bits[1] / 8.0 / double(costs[0].deltas));
+    }
+  }
   std::printf("%-18s %9.2f %6s %6s %8s %8s", "total (body)", total[0], "", "", "", "");
   if (two) std::printf(" %9.2f %6s %6s %8s %8s %+9.2f", total[1], "", "", "", "", total[1] - total[0]);
   std::printf("\n");
