@@ -6,8 +6,12 @@
 //   proto_pose_stream_bench [--log PATH] [--states N] [--keyframe-interval F] [--synth]
 //                           [--save-frames PATH | --load-frames PATH]
 //                           [--recording-keyframe-interval N]   (0: store the stream's frames)
+//                           [--save-contacts PATH]
 // --save/--load-frames keep the animated frames (and skeleton) in a file, so
 // that codec variants are compared on identical input while anim changes.
+// --save-contacts writes which feet the animator held planted (the frame
+// count as 8 bytes, then kMaxPlayers bytes a frame: bit 0 right, bit 1
+// left), for proto_pose_stream_stats --contacts.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -60,7 +64,7 @@ int main(int argc, char** argv) {
   std::size_t max_states = 0;
   EncoderOptions options;
   bool synth = false;
-  std::string save_frames, load_frames;
+  std::string save_frames, load_frames, save_contacts;
   int recording_keyframe_interval = record::WriterOptions{}.keyframe_interval;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -71,10 +75,12 @@ int main(int argc, char** argv) {
     else if (a == "--recording-keyframe-interval" && i + 1 < argc) recording_keyframe_interval = std::stoi(argv[++i]);
     else if (a == "--save-frames" && i + 1 < argc) save_frames = argv[++i];
     else if (a == "--load-frames" && i + 1 < argc) load_frames = argv[++i];
+    else if (a == "--save-contacts" && i + 1 < argc) save_contacts = argv[++i];
     else {
       std::fprintf(stderr,
                    "usage: %s [--log PATH] [--states N] [--keyframe-interval F] [--synth]\n"
-                   "       [--save-frames PATH | --load-frames PATH] [--recording-keyframe-interval N]\n",
+                   "       [--save-frames PATH | --load-frames PATH] [--recording-keyframe-interval N]\n"
+                   "       [--save-contacts PATH]\n",
                    argv[0]);
       return 2;
     }
@@ -110,6 +116,18 @@ int main(int argc, char** argv) {
     std::fwrite(hello_text.data(), 1, len, out);
     std::fwrite(&n, 8, 1, out);
     std::fwrite(game.frames.data(), sizeof(PoseFrame), n, out);
+    std::fclose(out);
+  }
+  if (!save_contacts.empty()) {
+    if (game.contacts.size() != game.frames.size() * kMaxPlayers) {
+      std::fprintf(stderr, "--save-contacts: no foot contacts (only from anim::Animator, not --load-frames)\n");
+      return 1;
+    }
+    const std::uint64_t n = game.frames.size();
+    std::FILE* out = std::fopen(save_contacts.c_str(), "wb");
+    if (!out) return 1;
+    std::fwrite(&n, 8, 1, out);
+    std::fwrite(game.contacts.data(), 1, game.contacts.size(), out);
     std::fclose(out);
   }
   const double load_s = std::chrono::duration<double>(Clock::now() - t_load).count();

@@ -12,7 +12,8 @@
 // viewer sees as a twitch.
 //
 //   proto_pose_stream_stats [--keyframe-interval F] [--no-partners] [--partner-study]
-//                           [--trace SLOT FROM TO DOF,DOF..] FRAMES [FRAMES_B]
+//                           [--trace SLOT FROM TO DOF,DOF..] [--contacts PATH [--contacts-measure-only]]
+//                           FRAMES [FRAMES_B]
 // Also: zigzag per dof (the second difference changing sign on consecutive
 // frames, both at least 4 steps: a 5-10 Hz shake, which smooth motion at
 // 20 Hz rarely makes), the residuals by magnitude, the values by how far
@@ -23,10 +24,21 @@
 // save; --no-partners codes without the partner table (what it is worth).
 // With two files (same game, two animations) the figures are side by side
 // with B - A.
+// --contacts PATH (one FRAMES file; PATH from `proto_pose_stream_bench
+// --save-contacts`, the same run as the frames) measures a per-foot contact
+// bit in every delta (not in the wire format): each foot's planted flag as
+// an adaptive bit (context: both feet's flags in the frame before, and for
+// the left foot the right foot's flag now), booked under meta, and the
+// legs' dofs of a planted foot coded in their own adaptive models (the
+// swinging legs keep the codec's). Both sets reset at keyframes, as the
+// codec's do. It also prints the legs' bits by speed band, swinging and
+// planted; --contacts-measure-only keeps the codec's models for all legs
+// (the legs' bits as the codec spends them, the contact bits still counted).
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <tuple>
@@ -43,6 +55,26 @@ using namespace mc::proto;
 namespace {
 
 bool g_study = false, g_no_partners = false;
+
+// --contacts: the planted feet of the frame being measured and of the one
+// before (bit 0 right, bit 1 left), the planted legs' models, the contact
+// bits' contexts.
+struct ContactStudy {
+  bool on = false;
+  std::vector<std::uint8_t> flags;  // [frame][slot]
+  const std::uint8_t* now = nullptr;
+  const std::uint8_t* before = nullptr;
+  std::array<SignedModel, kMaxDof> planted_legs;
+  std::array<Prob, 16> bit_ctx{};
+  int first_leg_dof = 1000;
+  double bits = 0;  // the contact bits, all deltas
+  double leg_bits[5][2] = {}, leg_n[5][2] = {};  // [speed band][planted]: bits and leg-frames of the deltas
+  bool split = true;  // false: --contacts-measure-only
+  void reset() {
+    for (auto& m : planted_legs) m.reset();
+    bit_ctx.fill(kProbInit);
+  }
+} g_contacts;
 constexpr int kBands = 5;
 const char* kBandName[kBands] = {"<0.3 m/s", "0.3-2", "2-4", "4-6", "6+"};
 int band_of(double speed) { return speed < 0.3 ? 0 : speed < 2 ? 1 : speed < 4 ? 2 : speed < 6 ? 3 : 4; }
@@ -118,7 +150,21 @@ struct CostIo {
   bool value(SignedModel& m, std::int32_t& v, std::int32_t pred, std::int32_t, std::int32_t, int zctx, int act,
              std::int32_t& r) {
     r = v - pred;
-    signed_cost(m, r, zctx, act);
+    {
+      SignedModel* model = &m;
+      const int d = index - 3, leg = g_contacts.first_leg_dof;
+      const bool pl = g_contacts.now != nullptr && player >= 0 && d >= leg && d < leg + 12 &&
+          ((g_contacts.now[static_cast<std::size_t>(player)] >> (d < leg + 6 ? 0 : 1)) & 1) != 0;
+      if (g_contacts.split && pl && !keyframe)
+        model = &g_contacts.planted_legs[static_cast<std::size_t>(d)];
+      const double b0 = bits;
+      signed_cost(*model, r, zctx, act);
+      if (g_contacts.now != nullptr && !keyframe && player >= 0 && d >= leg && d < leg + 12) {
+        const int bd = band[static_cast<std::size_t>(player)];
+        g_contacts.leg_bits[bd][pl ? 1 : 0] += bits - b0;
+        g_contacts.leg_n[bd][pl ? 1 : 0] += 1.0 / 6.0;
+      }
+    }
     if (player < 0) {
       book(kBall);
     } else if (index < 3) {
@@ -158,6 +204,17 @@ struct CostIo {
     index = 0;
     bit(p, b);
     book(kMeta);
+    if (g_contacts.now != nullptr && !keyframe) {
+      const auto slot = static_cast<std::size_t>(player);
+      const int now = g_contacts.now[slot] & 3, before = g_contacts.before != nullptr ? g_contacts.before[slot] & 3 : 0;
+      const double b0 = bits;
+      for (int foot = 0; foot < 2; ++foot) {
+        const int ctx = foot * 8 + ((before >> foot) & 1) * 4 + ((before >> (1 - foot)) & 1) * 2 + (foot == 1 ? (now & 1) : 0);
+        bit(g_contacts.bit_ctx[static_cast<std::size_t>(ctx)], ((now >> foot) & 1) != 0);
+      }
+      g_contacts.bits += bits - b0;
+      book(kMeta);
+    }
     return true;
   }
   bool check(bool, const char*) { return true; }
@@ -206,7 +263,7 @@ Costs measure(const Game& g, int keyframe_interval) {
   const int kinds = kDof0 + dofs;
   Costs c;
   for (int d = 0, j = 0; j < static_cast<int>(g.skeleton.joints.size()); d += static_cast<int>(g.skeleton.joints[static_cast<std::size_t>(j)].dofs.size()), ++j)
-    if (g.skeleton.joints[static_cast<std::size_t>(j)].name == "r_thigh") c.first_leg_dof = d;
+    if (g.skeleton.joints[static_cast<std::size_t>(j)].name == "r_thigh") c.first_leg_dof = g_contacts.first_leg_dof = d;
   c.delta_bits.assign(static_cast<std::size_t>(kinds), 0);
   c.band_bits.assign(static_cast<std::size_t>(kinds), {});
   c.odd_bits.assign(static_cast<std::size_t>(kinds), 0);
@@ -227,6 +284,11 @@ Costs measure(const Game& g, int keyframe_interval) {
   for (std::size_t t = 0; t < g.frames.size(); ++t) {
     const PoseFrame& f = g.frames[t];
     const bool key = t == 0 || since_key >= keyframe_interval || f.seq != last_seq + 1;
+    if (g_contacts.on) {
+      g_contacts.now = &g_contacts.flags[t * kMaxPlayers];
+      g_contacts.before = t > 0 ? &g_contacts.flags[(t - 1) * kMaxPlayers] : nullptr;
+      if (key) g_contacts.reset();
+    }
     CostIo io(c);
     io.keyframe = key;
     io.odd = (f.substep & 1) != 0;
@@ -407,13 +469,15 @@ std::string dof_name(const SkeletonDef& s, int dof) {
 int main(int argc, char** argv) {
   int keyframe_interval = 20;
   int trace_slot = -1, trace_from = 0, trace_to = 0;
-  std::string trace_dofs;
+  std::string trace_dofs, contacts_path;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--keyframe-interval" && i + 1 < argc) keyframe_interval = std::stoi(argv[++i]);
     else if (a == "--partner-study") g_study = true;
     else if (a == "--no-partners") g_no_partners = true;
+    else if (a == "--contacts" && i + 1 < argc) contacts_path = argv[++i];
+    else if (a == "--contacts-measure-only") g_contacts.split = false;
     else if (a == "--trace" && i + 4 < argc) {
       trace_slot = std::stoi(argv[++i]);
       trace_from = std::stoi(argv[++i]);
@@ -422,10 +486,10 @@ int main(int argc, char** argv) {
     }
     else files.push_back(a);
   }
-  if (files.empty() || files.size() > 2) {
+  if (files.empty() || files.size() > 2 || (!contacts_path.empty() && files.size() != 1)) {
     std::fprintf(stderr,
                  "usage: %s [--keyframe-interval F] [--no-partners] [--partner-study] [--trace SLOT FROM TO DOFS]\n"
-                 "       FRAMES [FRAMES_B]\n",
+                 "       [--contacts PATH [--contacts-measure-only]] FRAMES [FRAMES_B]\n",
                  argv[0]);
     return 2;
   }
@@ -435,6 +499,20 @@ int main(int argc, char** argv) {
     if (!load(files[i], games[i])) {
       std::fprintf(stderr, "cannot read %s\n", files[i].c_str());
       return 1;
+    }
+    if (!contacts_path.empty()) {
+      std::FILE* in = std::fopen(contacts_path.c_str(), "rb");
+      std::uint64_t n = 0;
+      if (in == nullptr || std::fread(&n, 8, 1, in) != 1 || n != games[i].frames.size()) {
+        if (in != nullptr) std::fclose(in);
+        std::fprintf(stderr, "cannot read %s, or not the frames' contacts\n", contacts_path.c_str());
+        return 1;
+      }
+      g_contacts.flags.resize(n * kMaxPlayers);
+      const bool ok = std::fread(g_contacts.flags.data(), 1, g_contacts.flags.size(), in) == g_contacts.flags.size();
+      std::fclose(in);
+      if (!ok) return 1;
+      g_contacts.on = true;
     }
     costs.push_back(measure(games[i], keyframe_interval));
   }
@@ -506,6 +584,19 @@ int main(int argc, char** argv) {
       std::printf(" %+9.2f", per_delta(costs[1], costs[1].delta_bits[static_cast<std::size_t>(k)]) -
                                  per_delta(costs[0], costs[0].delta_bits[static_cast<std::size_t>(k)]));
     std::printf("\n");
+  }
+  if (g_contacts.on)
+    std::printf("(--contacts: meta holds the contact bits, %.2f B a delta frame; the planted legs' dofs are coded apart)\n",
+                g_contacts.bits / 8.0 / double(costs[0].deltas));
+  if (g_contacts.on) {
+    std::printf("legs by speed band, swinging and planted: leg-frames, bits a leg-frame, B a delta frame\n");
+    for (int b = 0; b < kBands; ++b) {
+      const auto& n = g_contacts.leg_n[b];
+      const auto& bits = g_contacts.leg_bits[b];
+      std::printf("%-9s swinging %7.0f %6.2f %6.2f   planted %7.0f %6.2f %6.2f\n", kBandName[b], n[0],
+                  bits[0] / std::max(1.0, n[0]), bits[0] / 8.0 / double(costs[0].deltas), n[1],
+                  bits[1] / std::max(1.0, n[1]), bits[1] / 8.0 / double(costs[0].deltas));
+    }
   }
   std::printf("%-18s %9.2f %6s %6s %8s %8s", "total (body)", total[0], "", "", "", "");
   if (two) std::printf(" %9.2f %6s %6s %8s %8s %+9.2f", total[1], "", "", "", "", total[1] - total[0]);

@@ -38,6 +38,8 @@ bool load_real_game(const std::string& log_path, bool prefer_animator, std::size
     out.skeleton = anim::human_skeleton();
     out.animated_by = "anim::Animator";
     anim::Animator animator(out.skeleton, source->params());
+    std::vector<anim::FrameInfo> infos;
+    animator.set_frame_info_sink(&infos);
     std::vector<anim::AnimEvent> events;
     std::vector<std::pair<int, StaminaUpdate>> stamina;  // (state time, update): once every 10 states
     for (std::size_t i = 0; i < states.size(); ++i) {
@@ -45,6 +47,13 @@ bool load_real_game(const std::string& log_path, bool prefer_animator, std::size
       animator.push(states[i], out.frames, &events);
     }
     animator.finish(out.frames, &events);
+    out.contacts.clear();
+    if (infos.size() == out.frames.size()) {
+      out.contacts.reserve(infos.size() * kMaxPlayers);
+      for (const anim::FrameInfo& fi : infos)
+        for (const anim::PlayerFrameInfo& p : fi.players)
+          out.contacts.push_back(static_cast<std::uint8_t>((p.planted[0] ? 1 : 0) | (p.planted[1] ? 2 : 0)));
+    }
     // As server/app/log_feed.cpp sends them: an event just before the first
     // frame at or after its seq, then a stamina update just before the first
     // frame of its state, numbered as that frame.

@@ -3,6 +3,7 @@
 // (MATCHCAST_HAVE_ANIMATOR), else by the GaitSynth stand-in.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +22,11 @@ struct RealGame {
   // Only with anim::Animator.
   std::vector<std::pair<std::size_t, std::string>> controls;
   std::string animated_by;  // "anim::Animator" or "GaitSynth"
+  // Only with anim::Animator: which feet the animator held planted on the
+  // grass, kMaxPlayers bytes a frame in slot order, bit 0 the right foot,
+  // bit 1 the left (anim::PlayerFrameInfo::planted). For measurements
+  // (proto_pose_stream_stats --contacts): the stream does not carry them.
+  std::vector<std::uint8_t> contacts;
   std::string left_name, right_name;
 };
 
