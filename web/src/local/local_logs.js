@@ -21,6 +21,9 @@ const STYLE = `
   max-width: min(460px, 80vw); }
 #log-note.warn { color: #ffd6a0; }
 @media (max-width: 640px) { #log-note { top: 96px; } }
+/* The chosen player's card sits where the note is: below it while it shows. */
+body:has(#log-note:not([hidden])) #player-card { top: 112px; }
+@media (max-width: 640px) { body:has(#log-note:not([hidden])) #player-card { top: 150px; } }
 `;
 
 const mb = (n) => `${(n / 1e6).toFixed(1)} MB`;
