@@ -12,16 +12,16 @@ seed files. The ingest targets' seeds (real log fragments and datagrams) are
 older and not rewritten here. Run it again when the wire or recording format
 changes; keep the files few and small.
 """
-import base64
 import os
 import shutil
 import signal
-import socket
 import struct
 import subprocess
 import sys
 import tempfile
 import time
+
+from ws_client import WsClient  # scripts/ws_client.py
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 GAME = os.path.join(ROOT, 'data', '20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz')
@@ -37,51 +37,6 @@ def start(server, *args):
             return p, int(line.split('http://127.0.0.1:')[1].split('/')[0])
     p.kill()
     sys.exit('the server did not start')
-
-
-class Spectator:
-    """A minimal WebSocket client: the upgrade, then unmasked server frames."""
-
-    def __init__(self, port, target='/ws'):
-        self.s = socket.create_connection(('127.0.0.1', port), timeout=5)
-        key = base64.b64encode(os.urandom(16)).decode()
-        self.request = (f'GET {target} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nUpgrade: websocket\r\n'
-                        f'Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n'
-                        f'Origin: http://127.0.0.1:{port}\r\n\r\n').encode()
-        self.s.sendall(self.request)
-        self.buf = b''
-        while b'\r\n\r\n' not in self.buf:
-            self.buf += self.s.recv(4096)
-        head, self.buf = self.buf.split(b'\r\n\r\n', 1)
-        assert head.startswith(b'HTTP/1.1 101'), head
-
-    def need(self, n):
-        while len(self.buf) < n:
-            chunk = self.s.recv(65536)
-            if not chunk:
-                raise EOFError
-            self.buf += chunk
-
-    def read(self):
-        """(opcode, payload) of the next message."""
-        self.need(2)
-        op, n = self.buf[0] & 0x0F, self.buf[1] & 0x7F
-        at = 2
-        if n == 126:
-            self.need(4)
-            n, at = struct.unpack('>H', self.buf[2:4])[0], 4
-        elif n == 127:
-            self.need(10)
-            n, at = struct.unpack('>Q', self.buf[2:10])[0], 10
-        self.need(at + n)
-        payload, self.buf = self.buf[at:at + n], self.buf[at + n:]
-        return op, payload
-
-    def send_text(self, text):
-        """A masked client text frame (what a browser sends)."""
-        data, mask = text.encode(), os.urandom(4)
-        head = bytes([0x81, 0x80 | len(data)]) if len(data) < 126 else bytes([0x81, 0xFE]) + struct.pack('>H', len(data))
-        return head + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(data))
 
 
 def write(folder, name, data):
@@ -116,7 +71,7 @@ def main():
     try:
         # 1. Three seconds of the live stream: hello, metadata, frames, events.
         p, port = start(server, '--record-dir', '')
-        spectator = Spectator(port)
+        spectator = WsClient(port, timeout=5)
         texts, frames = [], []
         end = time.time() + 3
         while time.time() < end:
@@ -219,8 +174,8 @@ def main():
         # relay: what a browser's WebSocket sends (masked frames).
         d = os.path.join(ROOT, 'tests/relay/fuzz/seeds/ws_inbound')
         shutil.rmtree(d, ignore_errors=True)
-        write(d, 'timeshift', b'\x07' + spectator.send_text('{"type":"timeshift","action":"seek","time":1200}'))
-        write(d, 'replay', b'\x10' + spectator.send_text('{"type":"replay","action":"speed","speed":2}') +
+        write(d, 'timeshift', b'\x07' + WsClient.text_frame('{"type":"timeshift","action":"seek","time":1200}'))
+        write(d, 'replay', b'\x10' + WsClient.text_frame('{"type":"replay","action":"speed","speed":2}') +
               bytes([0x89, 0x80]) + os.urandom(4) + bytes([0x88, 0x82]) + b'\x00\x00\x00\x00\x03\xe8')
     finally:
         shutil.rmtree(tmp, ignore_errors=True)

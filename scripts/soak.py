@@ -2,7 +2,6 @@
 """The soak with faults behind scripts/soak.sh (see there). Everything on
 loopback, every process started here stopped here, every wait bounded."""
 import argparse
-import base64
 import json
 import os
 import random
@@ -15,6 +14,8 @@ import sys
 import threading
 import time
 import urllib.request
+
+from ws_client import WsClient  # scripts/ws_client.py
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 GAME = os.path.join(ROOT, 'data', '20261122030423-HELIOS_A_1-vs-HELIOS_B_5.rcg.gz')
@@ -52,52 +53,6 @@ def metrics(port):
     return out
 
 
-class Ws:
-    """A minimal WebSocket client (masked text out, unmasked frames in)."""
-
-    def __init__(self, port, target):
-        self.s = socket.create_connection(('127.0.0.1', port), timeout=10)
-        key = base64.b64encode(os.urandom(16)).decode()
-        self.s.sendall((f'GET {target} HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n'
-                        f'Sec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n\r\n').encode())
-        self.buf = b''
-        while b'\r\n\r\n' not in self.buf:
-            chunk = self.s.recv(4096)
-            if not chunk:
-                raise EOFError('closed during the upgrade')
-            self.buf += chunk
-        head, self.buf = self.buf.split(b'\r\n\r\n', 1)
-        if not head.startswith(b'HTTP/1.1 101'):
-            raise RuntimeError(head.split(b'\r\n')[0].decode())
-
-    def _need(self, n):
-        while len(self.buf) < n:
-            chunk = self.s.recv(65536)
-            if not chunk:
-                raise EOFError
-            self.buf += chunk
-
-    def read(self):
-        self._need(2)
-        op, n, at = self.buf[0] & 0x0F, self.buf[1] & 0x7F, 2
-        if n == 126:
-            self._need(4)
-            n, at = struct.unpack('>H', self.buf[2:4])[0], 4
-        elif n == 127:
-            self._need(10)
-            n, at = struct.unpack('>Q', self.buf[2:10])[0], 10
-        self._need(at + n)
-        payload, self.buf = self.buf[at:at + n], self.buf[at + n:]
-        return op, payload
-
-    def send(self, text):
-        data, mask = text.encode(), os.urandom(4)
-        self.s.sendall(bytes([0x81, 0x80 | len(data)]) + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(data)))
-
-    def close(self):
-        self.s.close()
-
-
 def frame_header(payload):
     """(seq, time, keyframe) from a frame header (proto/SPEC.md section 2)."""
     # magic, major, minor, flags (bit 0 keyframe), u32 seq at 4, i32 time at 8.
@@ -118,7 +73,7 @@ class ReplaySeeker(threading.Thread):
         ok = bad = 0
         errors = []
         try:
-            ws = Ws(self.port, '/ws?recording=' + self.name)
+            ws = WsClient(self.port, '/ws?recording=' + self.name)
             ws.s.settimeout(10)
             end = time.time() + self.seconds
             while time.time() < end:
