@@ -166,7 +166,8 @@ int App::nearest_to_ball(const PoseFrame& f) const {
 CameraTarget App::camera_target(const PoseFrame& f) {
   CameraTarget t;
   t.ball = to_scene(f.ball.x, f.ball.y, f.ball.z);
-  const bool needs_player = camera_.mode() == CameraMode::Player || camera_.mode() == CameraMode::Follow;
+  const bool needs_player = camera_.mode() == CameraMode::Player || camera_.mode() == CameraMode::Follow ||
+                            camera_.mode() == CameraMode::Closeup;
   if (needs_player && (selected_ < 0 || !player_visible(f.players[selected_]))) selected_ = nearest_to_ball(f);
   if (selected_ >= 0 && player_visible(f.players[selected_]) && model_) {
     const PlayerPose& p = f.players[selected_];

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 
 #include "viewer/log_source.hpp"
 
@@ -20,7 +21,8 @@ void App::cycle_player(int step) {
     slot = (slot + step + kMaxPlayers) % kMaxPlayers;
     if (player_visible(f.players[slot])) {
       selected_ = slot;
-      if (camera_.mode() != CameraMode::Player && camera_.mode() != CameraMode::Follow)
+      if (camera_.mode() != CameraMode::Player && camera_.mode() != CameraMode::Follow &&
+          camera_.mode() != CameraMode::Closeup)
         camera_.set_mode(CameraMode::Follow);
       return;
     }
@@ -36,12 +38,17 @@ void App::on_key(int key, int mods) {
     case GLFW_KEY_4: camera_.set_mode(CameraMode::Player); break;
     case GLFW_KEY_5: camera_.set_mode(CameraMode::Follow); break;
     case GLFW_KEY_7: camera_.set_mode(CameraMode::Top); break;
+    case GLFW_KEY_8: camera_.set_mode(CameraMode::Closeup); break;
     case GLFW_KEY_C: {
       const CameraMode order[] = {CameraMode::Broadcast, CameraMode::Orbit, CameraMode::Player,
-                                  CameraMode::Follow, CameraMode::Top};
+                                  CameraMode::Follow, CameraMode::Top, CameraMode::Closeup};
+      constexpr int n = static_cast<int>(std::size(order));
       int i = 0;
-      while (order[i] != camera_.mode()) ++i;
-      camera_.set_mode(order[(i + (shift ? 4 : 1)) % 5]);
+      while (i < n && order[i] != camera_.mode()) ++i;
+      if (i == n)  // from the director's camera: the first (or, backwards, the last)
+        camera_.set_mode(order[shift ? n - 1 : 0]);
+      else
+        camera_.set_mode(order[(i + (shift ? n - 1 : 1)) % n]);
       break;
     }
     case GLFW_KEY_TAB: cycle_player(shift ? -1 : 1); break;

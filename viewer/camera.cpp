@@ -20,6 +20,7 @@ constexpr ModeName kModes[] = {{CameraMode::Broadcast, "broadcast", '1'},
                                {CameraMode::Player, "player", '4'},
                                {CameraMode::Follow, "follow", '5'},
                                {CameraMode::Top, "top", '7'},
+                               {CameraMode::Closeup, "closeup", '8'},
                                {CameraMode::Director, "director", '0'}};
 
 }  // namespace
@@ -128,6 +129,22 @@ void Camera::update(double dt, const CameraTarget& target, float aspect,
       look_goal = p + dir * 5.0f;
       look_goal.y = 0.8f;
       fov_goal = 50.0f;
+      break;
+    }
+    case CameraMode::Closeup: {
+      if (!target.has_player) {
+        overview();
+        break;
+      }
+      // The page's close-up (web/src/cameras.js): beside the chosen player,
+      // from the main stand's side at chest height, so that his whole body
+      // and his kicks fill the picture. Not hung on his heading, which
+      // turns too often; held on him (his interpolated pose is smooth).
+      const glm::vec3 p = target.player_root;
+      goal = {p.x - 1.2f, 1.35f, p.z + 4.6f};
+      look_goal = {p.x, 0.8f, p.z};
+      fov_goal = aspect < 1 ? 55.0f : 38.0f;
+      snap_ = true;
       break;
     }
     case CameraMode::Director: {

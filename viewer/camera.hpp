@@ -20,20 +20,21 @@
 
 namespace mc::viewer {
 
-enum class CameraMode { Broadcast, Orbit, Player, Follow, Top, Director };
+enum class CameraMode { Broadcast, Orbit, Player, Follow, Top, Director, Closeup };
 
 // Mode names as on the command line and in the web page ("broadcast",
 // "orbit", "player", "follow", "top", "director": the server's director
-// track, director_view.hpp); false for another name.
+// track, director_view.hpp; "closeup": beside the chosen player); false for
+// another name.
 bool camera_mode_from_name(std::string_view name, CameraMode& out);
 std::string_view camera_mode_name(CameraMode mode);
-// The web page's keys: 0 director, 1 broadcast, 2 orbit, 4 player, 5 follow, 7 top.
+// The web page's keys: 0 director, 1 broadcast, 2 orbit, 4 player, 5 follow, 7 top, 8 close-up.
 char camera_mode_key(CameraMode mode);
 
 // What the modes look at, in scene space.
 struct CameraTarget {
   glm::vec3 ball{0.0f};
-  bool has_player = false;       // a player is chosen (player and follow modes)
+  bool has_player = false;       // a player is chosen (player, follow and close-up modes)
   glm::vec3 player_root{0.0f};   // his root on the grass
   float player_heading = 0;      // field degrees
   glm::vec3 head{0.0f};          // his head joint and its forward (+X) axis

@@ -32,15 +32,16 @@ std::optional<ViewerOptions> parse_options(int argc, char** argv, std::string& m
       "matchcast-viewer SOURCE [options]\n"
       "SOURCE: a relay (ws://HOST:PORT/ws, ws://HOST:PORT/ws?recording=NAME, http://HOST:PORT/)\n"
       "        or a recording file (.mcrec) or a game log (.rcg, .rcg.gz: animated in-process)\n"
-      "Keys: 0 director, 1 broadcast, 2 orbit, 4 player view, 5 follow, 7 top-down, C next camera;\n"
+      "Keys: 0 director, 1 broadcast, 2 orbit, 4 player view, 5 follow, 7 top-down, 8 close-up,\n"
+      "      C next camera;\n"
       "      Tab/] next player, [ previous, Esc nearest the ball; N numbers on/off;\n"
       "      Space/P pause, Left/Right seek 10 s (Shift: 60 s), Up/Down speed; Q quit.\n"
       "      Orbit: drag to turn, scroll to zoom.\n"
       "Options");
   desc.add_options()
       ("help,h", "this text")
-      ("camera", po::value(&camera), "director (the server's cut, the default) | broadcast | orbit | player | follow | top")
-      ("follow", po::value(&o.follow), "the chosen player for player/follow: l1..l11, r1..r11")
+      ("camera", po::value(&camera), "director (the server's cut, the default) | broadcast | orbit | player | follow | top | closeup")
+      ("follow", po::value(&o.follow), "the chosen player for player/follow/closeup: l1..l11, r1..r11")
       ("width", po::value(&o.width), "window or screenshot width (px)")
       ("height", po::value(&o.height), "window or screenshot height (px)")
       ("speed", po::value(&o.speed), "recording playback speed")
@@ -83,7 +84,7 @@ std::optional<ViewerOptions> parse_options(int argc, char** argv, std::string& m
     return std::nullopt;
   }
   if (!camera_mode_from_name(camera, o.camera)) {
-    message = "matchcast-viewer: unknown camera \"" + camera + "\" (director, broadcast, orbit, player, follow, top)";
+    message = "matchcast-viewer: unknown camera \"" + camera + "\" (director, broadcast, orbit, player, follow, top, closeup)";
     return std::nullopt;
   }
   Side side;

@@ -11,7 +11,7 @@ namespace {
 const proto::FieldGeometry kField;
 
 TEST(Camera, ModeNamesAndKeysMatchThePage) {
-  for (const char* name : {"broadcast", "orbit", "player", "follow", "top"}) {
+  for (const char* name : {"broadcast", "orbit", "player", "follow", "top", "closeup", "director"}) {
     CameraMode m;
     ASSERT_TRUE(camera_mode_from_name(name, m)) << name;
     EXPECT_EQ(camera_mode_name(m), name);
@@ -20,6 +20,7 @@ TEST(Camera, ModeNamesAndKeysMatchThePage) {
   EXPECT_FALSE(camera_mode_from_name("free", m));
   EXPECT_EQ(camera_mode_key(CameraMode::Broadcast), '1');
   EXPECT_EQ(camera_mode_key(CameraMode::Top), '7');
+  EXPECT_EQ(camera_mode_key(CameraMode::Closeup), '8');
 }
 
 TEST(Camera, TopDownShowsTheWholePitchWithTheTopTouchlineUp) {
@@ -93,6 +94,36 @@ TEST(Camera, FollowSitsBehindThePlayerAndSeesHim) {
   EXPECT_LT(px.y, 640);
   // A point behind the camera does not project.
   EXPECT_FALSE(cam.project(to_scene(10.0f, -30.0f, 1.0f), 960, 640, px));
+}
+
+TEST(Camera, CloseUpStandsBesideThePlayerAndHisWholeBodyFillsThePicture) {
+  Camera cam;
+  cam.set_mode(CameraMode::Closeup);
+  CameraTarget t;
+  t.has_player = true;
+  t.player_root = to_scene(-20.0f, 8.0f, 0.0f);
+  t.player_heading = 37.0f;  // not followed: the close-up does not swing with his heading
+  cam.update(0.0, t, 16.0f / 9.0f, kField);
+  // The page's framing (web/src/cameras.js 'closeup'), at once.
+  EXPECT_NEAR(cam.eye().x, -21.2f, 1e-3);
+  EXPECT_NEAR(cam.eye().y, 1.35f, 1e-3);
+  EXPECT_NEAR(cam.eye().z, 12.6f, 1e-3);
+  glm::vec2 head, feet;
+  ASSERT_TRUE(cam.project(t.player_root + glm::vec3(0, 1.8f, 0), 960, 540, head));
+  ASSERT_TRUE(cam.project(t.player_root, 960, 540, feet));
+  // Head and feet on the screen, and the body over half its height: a close-up.
+  EXPECT_GT(head.y, 0);
+  EXPECT_LT(feet.y, 540);
+  EXPECT_GT(feet.y - head.y, 270);
+  EXPECT_NEAR(feet.x, 480, 40);
+  // Held on him as he runs: the next frame is framed the same, no easing lag.
+  t.player_root += glm::vec3(0.4f, 0, 0);
+  cam.update(0.05, t, 16.0f / 9.0f, kField);
+  EXPECT_NEAR(cam.eye().x, -20.8f, 1e-3);
+  // No player chosen: the overview, not a close-up of the grass.
+  t.has_player = false;
+  cam.update(0.0, t, 16.0f / 9.0f, kField);
+  EXPECT_GT(cam.eye().y, 20.0f);
 }
 
 TEST(Camera, PlayerViewLooksFromTheHeadAlongItsForwardAxis) {

@@ -27,6 +27,7 @@
 #include "viewer/camera.hpp"
 #include "viewer/player_model.hpp"
 #include "viewer/png.hpp"
+#include "wasm/log_reference.hpp"
 #include "tests/viewer/test_processes.hpp"
 
 namespace mc::viewer {
@@ -288,6 +289,134 @@ TEST(Screenshot, RecordingOfTheLiveGame) {
   expect_players_where_the_frame_puts_them(top, f, reader.hello(), CameraMode::Top, "recording-top");
   EXPECT_GT(fraction_different(broadcast.image, top.image), 0.2);
   EXPECT_GT(fraction_different(broadcast.image, follow.image), 0.2);
+}
+
+// The bundled game as the server's pipeline makes it (the viewer animates a
+// log in-process with the same pipeline): frames by seq and the kicks.
+struct Broadcast {
+  proto::Hello hello;
+  std::map<std::uint32_t, PoseFrame> frames;
+  std::vector<proto::KickEvent> kicks;
+};
+
+Broadcast broadcast_of(const std::string& log) {
+  Broadcast b;
+  std::string out, error;
+  EXPECT_TRUE(wasm::broadcast_log_file(log, {}, out, error)) << error;
+  std::unique_ptr<proto::FrameDecoder> decoder;
+  for (std::size_t i = 0; i + 5 <= out.size();) {
+    const char kind = out[i];
+    std::uint32_t n = 0;
+    for (int k = 0; k < 4; ++k) n |= static_cast<std::uint32_t>(static_cast<std::uint8_t>(out[i + 1 + k])) << (8 * k);
+    const std::string_view bytes = std::string_view(out).substr(i + 5, n);
+    i += 5 + n;
+    if (kind == 'h') {
+      EXPECT_TRUE(proto::hello_from_json(bytes, b.hello, error)) << error;
+      decoder = std::make_unique<proto::FrameDecoder>(b.hello.skeleton);
+    } else if ((kind == 'k' || kind == 'f') && decoder) {
+      PoseFrame f;
+      if (decoder->decode(bytes, f, error)) b.frames[f.seq] = f;
+    } else if (kind == 'c') {
+      proto::ControlMessage m;
+      if (proto::control_from_json(bytes, m, error))
+        if (const auto* k = std::get_if<proto::KickEvent>(&m)) b.kicks.push_back(*k);
+    }
+  }
+  return b;
+}
+
+std::string follow_arg(const PlayerPose& p) {
+  return (p.side == Side::Right ? "r" : "l") + std::to_string(p.unum);
+}
+
+// A close-up: the viewer's camera stood where the page's close-up stands,
+// beside the chosen player; his whole body, head to feet, fills over a
+// third of the picture's height, his shirt is drawn at his chest, and (for
+// a kick) the ball is in the picture with him.
+void expect_close_up_of(const Shot& shot, const Broadcast& b, int slot, bool with_ball, const std::string& name) {
+  ASSERT_TRUE(shot.report.is_object()) << name;
+  expect_not_blank(shot.image, name);
+  const auto it = b.frames.find(shot.report["seq"].get<std::uint32_t>());
+  ASSERT_NE(it, b.frames.end()) << name << ": the viewer drew a frame the pipeline did not make";
+  const PlayerPose& p = it->second.players[slot];
+  ASSERT_TRUE(player_visible(p)) << name;
+  Camera camera;
+  camera.set_mode(CameraMode::Closeup);
+  CameraTarget target;
+  target.has_player = true;
+  target.player_root = to_scene(p.x, p.y, 0.0f);
+  camera.update(0.0, target, static_cast<float>(kWidth) / kHeight, b.hello.field);
+  EXPECT_NEAR(shot.report["camera"]["eye"][0].get<float>(), camera.eye().x, 0.05) << name;
+  EXPECT_NEAR(shot.report["camera"]["eye"][2].get<float>(), camera.eye().z, 0.05) << name;
+
+  const PlayerModel model(b.hello.skeleton);
+  std::vector<glm::mat4> joints;
+  ASSERT_TRUE(model.joints(p, joints)) << name;
+  glm::vec2 head, chest, lfoot, rfoot;
+  ASSERT_TRUE(camera.project(model.segment_center(joints, model.head_joint()), kWidth, kHeight, head));
+  ASSERT_TRUE(camera.project(model.segment_center(joints, model.chest_joint()), kWidth, kHeight, chest));
+  ASSERT_TRUE(camera.project(glm::vec3(joints[b.hello.skeleton.find("l_foot")][3]), kWidth, kHeight, lfoot));
+  ASSERT_TRUE(camera.project(glm::vec3(joints[b.hello.skeleton.find("r_foot")][3]), kWidth, kHeight, rfoot));
+  const float feet_y = std::max(lfoot.y, rfoot.y);
+  std::printf("%s: %s at (%.1f, %.1f), head at y %.0f px, feet at y %.0f px of %d\n", name.c_str(),
+              follow_arg(p).c_str(), p.x, p.y, head.y, feet_y, kHeight);
+  EXPECT_GT(head.y, 0) << name;
+  EXPECT_LT(feet_y, kHeight) << name;
+  EXPECT_GT(feet_y - head.y, kHeight / 3.0f) << name << ": not a close-up";
+  const glm::vec3 shirt = team_kit(p.side == Side::Right ? b.hello.right : b.hello.left, p.side, false).shirt;
+  EXPECT_TRUE(found_near(shot.image, chest, shirt, 6)) << name << ": no shirt at his chest";
+  if (with_ball) {
+    glm::vec2 ball;
+    const BallPose& bl = it->second.ball;
+    ASSERT_TRUE(camera.project(to_scene(bl.x, bl.y, bl.z), kWidth, kHeight, ball)) << name;
+    EXPECT_TRUE(ball.x > 0 && ball.y > 0 && ball.x < kWidth && ball.y < kHeight) << name << ": the ball is off the picture";
+  }
+}
+
+TEST(Screenshot, CloseUpsOfBodiesRunningAndKicking) {
+  const Broadcast b = broadcast_of(kLog);
+  ASSERT_GT(b.frames.size(), 1000u);
+  ASSERT_FALSE(b.kicks.empty());
+  // A field player running fast (6.5 m/s or more over the 0.5 s either
+  // side, so not a set piece's jump) in open play, and a kick by a field
+  // player, both well after the kick-off.
+  int run_time = -1, run_slot = -1;
+  PlayerPose runner;
+  for (auto it = b.frames.begin(); it != b.frames.end() && run_time < 0; ++it) {
+    const auto before = b.frames.find(it->first - 10), after = b.frames.find(it->first + 10);
+    if (it->second.time < 300 || before == b.frames.end() || after == b.frames.end()) continue;
+    for (int s = 0; s < kMaxPlayers; ++s) {
+      const PlayerPose &p0 = before->second.players[s], &p1 = after->second.players[s];
+      if (!player_visible(p0) || !player_visible(p1) || (p1.state & state_bits::kGoalie)) continue;
+      const float v = std::hypot(p1.x - p0.x, p1.y - p0.y);  // m per second (20 frames)
+      if (v >= 6.5f && v < 11.0f && std::abs(p1.y) < 30.0f) {
+        run_time = it->second.time;
+        run_slot = s;
+        runner = it->second.players[s];
+        break;
+      }
+    }
+  }
+  ASSERT_GE(run_time, 0) << "nobody runs at 6.5 m/s in the bundled game";
+  const proto::KickEvent* kick = nullptr;
+  for (const auto& k : b.kicks) {
+    const auto f = b.frames.find(k.seq);
+    if (k.time >= 300 && f != b.frames.end() && !(f->second.players[player_index(k.side, k.unum)].state & state_bits::kGoalie)) {
+      kick = &k;
+      break;
+    }
+  }
+  ASSERT_NE(kick, nullptr);
+  const int kick_slot = player_index(kick->side, kick->unum);
+  const PlayerPose& kicker = b.frames.at(kick->seq).players[kick_slot];
+
+  const Shot run = screenshot(kLog, run_time, "closeup", "closeup-running",
+                              {"--follow", follow_arg(runner)});
+  const Shot kicking = screenshot(kLog, kick->time, "closeup", "closeup-kicking", {"--follow", follow_arg(kicker)});
+  expect_close_up_of(run, b, run_slot, false, "closeup-running");
+  expect_close_up_of(kicking, b, kick_slot, true, "closeup-kicking");
+  // Two moments, two players: not the same picture (sky and grass fill most of both).
+  EXPECT_GT(fraction_different(run.image, kicking.image), 0.04);
 }
 
 TEST(Screenshot, ARefusedRelayOrACorruptRecordingFailsWithAClearMessage) {
