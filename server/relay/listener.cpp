@@ -11,7 +11,7 @@ namespace beast = boost::beast;
 namespace mc::relay {
 
 Listener::Listener(std::vector<net::io_context*> threads, const HttpContext& context)
-    : threads_(std::move(threads)), acceptor_(*threads_.front()), context_(context) {}
+    : threads_(std::move(threads)), acceptor_(*threads_.front()), retry_(*threads_.front()), context_(context) {}
 
 bool Listener::open(const net::ip::tcp::endpoint& endpoint, std::string& error) {
   beast::error_code ec;
@@ -19,6 +19,8 @@ bool Listener::open(const net::ip::tcp::endpoint& endpoint, std::string& error) 
   if (!ec) acceptor_.set_option(net::socket_base::reuse_address(true), ec);
   if (!ec) acceptor_.bind(endpoint, ec);
   if (!ec) acceptor_.listen(net::socket_base::max_listen_connections, ec);
+  // on_accept() takes what else is waiting with non-blocking accepts.
+  if (!ec) acceptor_.non_blocking(true, ec);
   if (ec) {
     error = "cannot listen on " + endpoint.address().to_string() + ":" +
             std::to_string(endpoint.port()) + ": " + ec.message();
@@ -39,6 +41,7 @@ void Listener::close() {
   net::post(acceptor_.get_executor(), [self = shared_from_this()] {
     beast::error_code ec;
     self->acceptor_.close(ec);
+    self->retry_.cancel();
   });
 }
 
@@ -64,33 +67,57 @@ void Listener::refuse(net::ip::tcp::socket& socket) {
 void Listener::on_accept(beast::error_code ec, net::ip::tcp::socket socket) {
   if (ec == net::error::operation_aborted) return;  // closed
   if (ec) {
-    // Out of file descriptors and similar: log and keep accepting.
+    // Out of file descriptors and similar: log, and try again a little
+    // later (at once would spin on the same error while the queue is full).
     log_event("accept_failed", ec.message());
-  } else {
-    // A live stream wants each frame on the wire now: without TCP_NODELAY,
-    // Nagle holds a message that follows another (a stamina update right
-    // after a frame) until the client's delayed ACK, up to 40 ms.
-    beast::error_code ignored;
-    socket.set_option(net::ip::tcp::no_delay(true), ignored);
-    if (context_.config.socket_send_buffer > 0) {
-      socket.set_option(net::socket_base::send_buffer_size(static_cast<int>(context_.config.socket_send_buffer)),
-                        ignored);
-    }
-    // Every connection takes its address's slot at once, before it has
-    // said anything: a host that opens many (slow headers, half-open
-    // sockets, a flood of upgrades) is refused past the limit, and other
-    // addresses are not affected.
-    beast::error_code peer_ec;
-    const auto peer = socket.remote_endpoint(peer_ec);
-    auto ticket = peer_ec ? nullptr : context_.limiter->acquire(peer.address());
-    if (!ticket) {
-      if (!peer_ec) ++context_.stats.refused_per_ip;
-      refuse(socket);
-    } else {
-      std::make_shared<HttpSession>(std::move(socket), context_, std::move(ticket))->run();
-    }
+    retry_.expires_after(std::chrono::milliseconds(50));
+    retry_.async_wait([self = shared_from_this()](beast::error_code e) {
+      if (!e) self->do_accept();
+    });
+    return;
+  }
+  admit(std::move(socket));
+  // Everything else already waiting in the listen queue, now. Each
+  // async_accept completes only after the handlers queued before it, and
+  // while thousands of spectators are being sent a frame that queue is one
+  // whole fan-out long (tens of ms): one connection per pass let a connect
+  // storm time out in the kernel's backlog. The batch is bounded so that
+  // a storm cannot hold up the frames either.
+  constexpr int kBatch = 128;
+  for (int i = 0; i < kBatch; ++i) {
+    net::ip::tcp::socket next(*threads_[next_ % threads_.size()]);
+    acceptor_.accept(next, ec);
+    if (ec == net::error::would_block || ec == net::error::try_again) break;
+    if (ec) break;  // the async_accept below meets it again and says so
+    ++next_;
+    admit(std::move(next));
   }
   do_accept();
+}
+
+void Listener::admit(net::ip::tcp::socket socket) {
+  // A live stream wants each frame on the wire now: without TCP_NODELAY,
+  // Nagle holds a message that follows another (a stamina update right
+  // after a frame) until the client's delayed ACK, up to 40 ms.
+  beast::error_code ignored;
+  socket.set_option(net::ip::tcp::no_delay(true), ignored);
+  if (context_.config.socket_send_buffer > 0) {
+    socket.set_option(net::socket_base::send_buffer_size(static_cast<int>(context_.config.socket_send_buffer)),
+                      ignored);
+  }
+  // Every connection takes its address's slot at once, before it has
+  // said anything: a host that opens many (slow headers, half-open
+  // sockets, a flood of upgrades) is refused past the limit, and other
+  // addresses are not affected.
+  beast::error_code peer_ec;
+  const auto peer = socket.remote_endpoint(peer_ec);
+  auto ticket = peer_ec ? nullptr : context_.limiter->acquire(peer.address());
+  if (!ticket) {
+    if (!peer_ec) ++context_.stats.refused_per_ip;
+    refuse(socket);
+  } else {
+    std::make_shared<HttpSession>(std::move(socket), context_, std::move(ticket))->run();
+  }
 }
 
 }  // namespace mc::relay

@@ -5,6 +5,7 @@
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core/error.hpp>
 #include <memory>
 #include <vector>
@@ -25,13 +26,17 @@ class Listener : public std::enable_shared_from_this<Listener> {
 
  private:
   void do_accept();
+  // Admits this connection and any others already waiting (a bounded batch).
   void on_accept(boost::beast::error_code ec, boost::asio::ip::tcp::socket socket);
+  // Sets the socket up and gives it an HttpSession, or refuses it (per-IP cap).
+  void admit(boost::asio::ip::tcp::socket socket);
   // Answers 429 and closes: the address holds max_connections_per_ip.
   void refuse(boost::asio::ip::tcp::socket& socket);
 
   std::vector<boost::asio::io_context*> threads_;
   std::size_t next_ = 0;
   boost::asio::ip::tcp::acceptor acceptor_;
+  boost::asio::steady_timer retry_;  // after an accept error (out of descriptors)
   const HttpContext& context_;
 };
 
