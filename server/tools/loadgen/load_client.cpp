@@ -29,6 +29,7 @@ void ClientStats::merge(const ClientStats& o) {
   resync_gaps += o.resync_gaps;
   stalled_cut += o.stalled_cut;
   stalled_not_cut += o.stalled_not_cut;
+  abandoned += o.abandoned;
   if (first_error.empty()) first_error = o.first_error;
   delay.merge(o.delay);
 }
@@ -58,6 +59,7 @@ void LoadClient::start() {
 }
 
 void LoadClient::stop() {
+  if (!open_ && !ended_) ++stats_.abandoned;
   ended_ = true;
   beast::error_code ec;
   pause_.cancel();

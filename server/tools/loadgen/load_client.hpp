@@ -43,6 +43,10 @@ struct ClientStats {
   // whether the relay had cut them off (EOF or reset after what it had
   // sent) or was still sending (a frame stamped after they resumed).
   std::uint64_t stalled_cut = 0, stalled_not_cut = 0;
+  // Clients stopped by us while still connecting or upgrading (a burst
+  // that left, the end of a run): the relay may have counted the upgrade
+  // without the client ever seeing its answer.
+  std::uint64_t abandoned = 0;
   std::string first_error;           // the first connect or decode error, for the report
   LatencyHistogram delay;
 

@@ -179,14 +179,14 @@ class Population {
     auto u = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
     std::printf(
         "{\"t\":%.1f,\"final\":%s,\"open\":{\"healthy\":%u,\"stalled\":%u,\"burst\":%u},\"joins\":%llu,\"leaves\":%llu,"
-        "\"healthy\":{\"connected\":%llu,\"failed\":%llu,\"closed_by_server\":%llu,\"messages\":%llu,\"frames\":%llu,"
+        "\"healthy\":{\"connected\":%llu,\"failed\":%llu,\"abandoned\":%llu,\"closed_by_server\":%llu,\"messages\":%llu,\"frames\":%llu,"
         "\"gaps\":%llu,\"resync_gaps\":%llu,\"frames_skipped\":%llu,\"out_of_order\":%llu,\"decode_errors\":%llu,"
         "\"delay_p50_ms\":%.1f,\"delay_p99_ms\":%.1f,\"delay_max_ms\":%.1f,\"first_error\":\"%s\"},"
-        "\"stalled\":{\"connected\":%llu,\"failed\":%llu,\"cut\":%llu,\"not_cut\":%llu,\"messages\":%llu}}\n",
+        "\"stalled\":{\"connected\":%llu,\"failed\":%llu,\"abandoned\":%llu,\"cut\":%llu,\"not_cut\":%llu,\"messages\":%llu}}\n",
         t, final ? "true" : "false", all.open[0], all.open[2], all.burst_open, u(all.joins), u(all.leaves),
-        u(h.connected), u(h.failed), u(h.closed_by_server), u(h.messages), u(h.frames), u(h.gaps), u(h.resync_gaps),
+        u(h.connected), u(h.failed), u(h.abandoned), u(h.closed_by_server), u(h.messages), u(h.frames), u(h.gaps), u(h.resync_gaps),
         u(h.frames_skipped), u(h.out_of_order), u(h.decode_errors), h.delay.quantile(0.5), h.delay.quantile(0.99),
-        h.delay.max(), h.first_error.substr(0, 80).c_str(), u(st.connected), u(st.failed), u(st.stalled_cut),
+        h.delay.max(), h.first_error.substr(0, 80).c_str(), u(st.connected), u(st.failed), u(st.abandoned), u(st.stalled_cut),
         u(st.stalled_not_cut), u(st.messages));
     std::fflush(stdout);
   }
