@@ -2,7 +2,7 @@
 # Fan-out benchmark: the relay on one core, matchcast-loadgen on the other.
 #
 #   scripts/bench-fanout.sh [--sizes "1000 5000 9000"] [--duration 20] [--runs 2]
-#                           [--anchor 'CMD {port}'] [--server-args '...']
+#                           [--anchor 'CMD {port}'] [--server-args '...'] [--both-cores]
 #
 # For each size it starts matchcast-server (--threads 1, no recording, the
 # bundled game) pinned to core 0, runs matchcast-loadgen pinned to core 1
@@ -11,7 +11,11 @@
 # per delivered message and user-space memory per spectator (RSS growth).
 # With --anchor, the same load runs against that command too (its "{port}"
 # is replaced by a free port), the two alternating run by run, and each size
-# ends with the ratios Matchcast / anchor. Figures: server/relay/README.md.
+# ends with the ratios Matchcast / anchor. --both-cores: nothing pinned, the
+# relay with --threads 0 (a thread per core) and the load generator with two
+# threads, sharing the machine: run it over growing --sizes to find the most
+# spectators that still get every frame at p99 <= 100 ms.
+# Figures: server/relay/README.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -21,6 +25,7 @@ runs=1
 anchor=""
 server_args=""
 ramp=1500
+both=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --sizes) sizes="$2"; shift 2 ;;
@@ -29,7 +34,8 @@ while [[ $# -gt 0 ]]; do
     --anchor) anchor="$2"; shift 2 ;;
     --server-args) server_args="$2"; shift 2 ;;
     --ramp) ramp="$2"; shift 2 ;;
-    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    --both-cores) both=1; shift ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
     *) echo "bench-fanout: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -56,23 +62,30 @@ wait_port() {  # port, pid
 # start NAME: starts the server NAME on core 0; sets pid and port.
 start() {
   port=$(free_port)
+  local pin=(taskset -c 0) threads=1
+  if [[ -n $both ]]; then pin=(); threads=0; fi
   if [[ $1 == matchcast ]]; then
     # shellcheck disable=SC2086
-    taskset -c 0 "$server" --threads 1 --record-dir '' --port "$port" --max-connections-per-ip 0 \
+    "${pin[@]}" "$server" --threads "$threads" --record-dir '' --port "$port" --max-connections-per-ip 0 \
       --max-clients 50000 $server_args >"$out/server.log" 2>&1 &
   else
-    taskset -c 0 bash -c "exec ${anchor//\{port\}/$port}" >"$out/server.log" 2>&1 &
+    "${pin[@]}" bash -c "exec ${anchor//\{port\}/$port}" >"$out/server.log" 2>&1 &
   fi
   pid=$!
   wait_port "$port" "$pid" || { echo "bench-fanout: $1 did not start" >&2; cat "$out/server.log" >&2; exit 1; }
   sleep 1
 }
 
-# One run: prints "connected delivered_pct p50 p99 max cpu_us_per_msg kb_per_spectator".
+# One run: prints "connected delivered_pct p50 p99 max cpu_us_per_msg cpu_us_per_frame kb_per_spectator gaps".
+# Per message counts every WebSocket message delivered; per frame only the
+# pose frames, so a server that sends extra messages (Matchcast's stamina,
+# kick and director messages) is not flattered by them.
 run() {  # name clients
   start "$1"
   local log="$out/$1-$2.log"
-  taskset -c 1 "$loadgen" --port "$port" -n "$2" --threads 1 --nice 0 --ramp "$ramp" \
+  local pin=(taskset -c 1) threads=1
+  if [[ -n $both ]]; then pin=(); threads=2; fi
+  "${pin[@]}" "$loadgen" --port "$port" -n "$2" --threads "$threads" --nice 0 --ramp "$ramp" \
     --duration "$duration" --header-only --server-pid "$pid" >"$log" 2>&1 || true
   kill -TERM "$pid" 2>/dev/null; wait "$pid" 2>/dev/null || true
   awk -v n="$2" -v d="$duration" '
@@ -85,11 +98,13 @@ run() {  # name clients
       seconds = d; expected = n * 20 * seconds
       pct = expected > 0 ? 100 * frames / expected : 0
       us = msgs > 0 ? cpu * 1e6 / msgs : 0
-      printf "%s %.1f %s %s %s %.2f %.2f %s\n", connected, pct, p50, p99, max, us, kb, gaps
+      usf = frames > 0 ? cpu * 1e6 * seconds / frames : 0
+      printf "%s %.1f %s %s %s %.2f %.2f %.2f %s\n", connected, pct, p50, p99, max, us, usf, kb, gaps
     }' "$log"
 }
 
-printf '%-10s %7s %9s %10s %8s %8s %8s %12s %10s %5s\n' server clients connected "delivered%" p50_ms p99_ms max_ms "cpu_us/msg" "KB/spect" gaps
+printf '%-10s %7s %9s %10s %8s %8s %8s %11s %12s %9s %5s\n' server clients connected "delivered%" p50_ms p99_ms max_ms \
+  "cpu_us/msg" "cpu_us/frame" "KB/spect" gaps
 for n in $sizes; do
   declare -A sum=()
   for r in $(seq "$runs"); do
@@ -99,18 +114,21 @@ for n in $sizes; do
       if (( r % 2 )); then order=(matchcast anchor); else order=(anchor matchcast); fi
     fi
     for name in "${order[@]}"; do
-      read -r connected pct p50 p99 max us kb gaps < <(run "$name" "$n")
-      printf '%-10s %7s %9s %10s %8s %8s %8s %12s %10s %5s\n' "$name" "$n" "$connected" "$pct" "$p50" "$p99" "$max" "$us" "$kb" "$gaps"
+      read -r connected pct p50 p99 max us usf kb gaps < <(run "$name" "$n")
+      printf '%-10s %7s %9s %10s %8s %8s %8s %11s %12s %9s %5s\n' "$name" "$n" "$connected" "$pct" "$p50" "$p99" "$max" \
+        "$us" "$usf" "$kb" "$gaps"
       sum[$name.p99]=$(awk -v a="${sum[$name.p99]:-0}" -v b="$p99" 'BEGIN{print a+b}')
       sum[$name.us]=$(awk -v a="${sum[$name.us]:-0}" -v b="$us" 'BEGIN{print a+b}')
+      sum[$name.usf]=$(awk -v a="${sum[$name.usf]:-0}" -v b="$usf" 'BEGIN{print a+b}')
       sum[$name.kb]=$(awk -v a="${sum[$name.kb]:-0}" -v b="$kb" 'BEGIN{print a+b}')
     done
   done
   if [[ -n $anchor ]]; then
     awk -v n="$n" -v p="${sum[matchcast.p99]}" -v pa="${sum[anchor.p99]}" -v u="${sum[matchcast.us]}" \
-        -v ua="${sum[anchor.us]}" -v k="${sum[matchcast.kb]}" -v ka="${sum[anchor.kb]}" 'BEGIN {
-      printf "ratio      %7s  matchcast/anchor: p99 %.2f, cpu per message %.2f, memory per spectator %.2f\n",
-        n, (pa > 0 ? p / pa : 0), (ua > 0 ? u / ua : 0), (ka > 0 ? k / ka : 0) }'
+        -v ua="${sum[anchor.us]}" -v f="${sum[matchcast.usf]}" -v fa="${sum[anchor.usf]}" \
+        -v k="${sum[matchcast.kb]}" -v ka="${sum[anchor.kb]}" 'BEGIN {
+      printf "ratio      %7s  matchcast/anchor: p99 %.2f, cpu per message %.2f, per frame %.2f, memory per spectator %.2f\n",
+        n, (pa > 0 ? p / pa : 0), (ua > 0 ? u / ua : 0), (fa > 0 ? f / fa : 0), (ka > 0 ? k / ka : 0) }'
   fi
   unset sum
 done
