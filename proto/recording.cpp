@@ -563,15 +563,25 @@ bool parse_trailer(std::string_view last16, std::uint64_t& index_offset) {
 
 std::size_t find_chunk(const std::vector<ChunkInfo>& chunks, int time, int stoppage) {
   if (chunks.empty()) return 0;
-  // Binary search on (first_time, first_stoppage): chunks are in stream order.
-  std::size_t lo = 0, hi = chunks.size();
+  // Binary search on (first_time, first_stoppage): chunks are in stream
+  // order, but a chunk of control messages only has no frame and so no
+  // time (all 0, SPEC.md 6): one stands before every keyframe chunk of the
+  // server's recordings, and taking its 0 as a time sent a seek to the
+  // wrong half. The search looks past them to the next chunk with frames.
+  const auto at_or_before = [&](const ChunkInfo& c) {
+    return c.first_time < time ||
+           (c.first_time == time &&
+            (c.first_stoppage < stoppage || (c.first_stoppage == stoppage && c.first_substep == 0)));
+  };
+  std::size_t lo = 0, hi = chunks.size();  // the answer is in [lo, hi)
   while (hi - lo > 1) {
     const std::size_t mid = (lo + hi) / 2;
-    const auto& c = chunks[mid];
-    if (c.first_time < time || (c.first_time == time && (c.first_stoppage < stoppage ||
-                                                          (c.first_stoppage == stoppage && c.first_substep == 0))))
-      lo = mid;
-    else hi = mid;
+    std::size_t m = mid;
+    while (m < hi && chunks[m].frame_count == 0) ++m;
+    if (m < hi && at_or_before(chunks[m]))
+      lo = m;
+    else
+      hi = mid;  // [mid, m) hold no frames, chunk m (if any) is after the time
   }
   while (lo > 0 && !chunks[lo].starts_with_keyframe) --lo;
   return lo;

@@ -143,7 +143,8 @@ bool parse_trailer(std::string_view last16, std::uint64_t& index_offset);
 // The chunk to start decoding from to reach simulation time `time` (and
 // `stoppage`): the last chunk starting with a keyframe whose first frame is
 // at or before it; 0 when the time is before the first chunk or `chunks`
-// is empty. `chunks` in file order.
+// is empty. `chunks` in file order; chunks of control messages only (frame
+// count 0, no time) are looked past.
 std::size_t find_chunk(const std::vector<ChunkInfo>& chunks, int time, int stoppage = 0);
 
 }  // namespace mc::proto::rec

@@ -60,7 +60,12 @@ class RecordingReader {
   bool refresh(std::string& error);
   // Simulation time of the first frame of the last chunk known (0 if none):
   // the latest point a seek can reach.
-  int last_chunk_time() const { return chunks_.empty() ? 0 : chunks_.back().first_time; }
+  int last_chunk_time() const {
+    // The last chunk with frames: one of control messages only has no time.
+    for (auto it = chunks_.rbegin(); it != chunks_.rend(); ++it)
+      if (it->frame_count > 0) return it->first_time;
+    return 0;
+  }
 
  private:
   bool read_at(std::uint64_t offset, std::size_t size, std::string& out, std::string& error) const;

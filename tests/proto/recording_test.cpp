@@ -183,5 +183,32 @@ TEST(RecordingFormat, FindChunkPicksTheLastKeyframeChunkAtOrBefore) {
   EXPECT_EQ(find_chunk({}, 3), 0u);
 }
 
+// The server's recordings: a chunk of control messages only (frame count 0,
+// time 0) before every keyframe chunk, a keyframe every 200 frames (100
+// cycles) and chunks of 20 frames (10 cycles) between. A seek must land
+// where a walk of every chunk would, at every time; the soak found seeks to
+// cycles 36 and 117 landing on 171 when the search took those 0s as times.
+TEST(RecordingFormat, FindChunkLooksPastChunksOfControlMessagesOnly) {
+  std::vector<ChunkInfo> c;
+  std::uint32_t seq = 0;
+  for (int t = 1; t < 1000; t += 10) {
+    const bool key = (t - 1) % 100 == 0;
+    if (key) c.push_back({0, 0, 0, 0, 0, false, 0});  // the messages before the keyframe
+    c.push_back({0, seq, t, 0, 0, key, 20});
+    seq += 20;
+  }
+  const auto walk = [&](int time) {  // the reference: the last keyframe chunk at or before
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (c[i].frame_count > 0 && c[i].starts_with_keyframe && c[i].first_time <= time) best = i;
+    return best;
+  };
+  for (int time = -3; time < 1010; ++time) ASSERT_EQ(find_chunk(c, time), walk(time)) << "time " << time;
+  EXPECT_EQ(c[find_chunk(c, 36)].first_time, 1);
+  EXPECT_EQ(c[find_chunk(c, 117)].first_time, 101);
+  // Only control messages, or nothing with frames after the first: no crash, chunk 0.
+  EXPECT_EQ(find_chunk({{0, 0, 0, 0, 0, false, 0}, {0, 0, 0, 0, 0, false, 0}}, 50), 0u);
+}
+
 }  // namespace
 }  // namespace mc::proto::rec
