@@ -22,12 +22,11 @@ struct ModelSet {
   SignedModel ball_xy, ball_z, pos_xy, pos_z, heading;
   std::array<SignedModel, kMaxDof> angle;
   Prob meta_changed = kProbInit;
-  void reset() {
-    for (SignedModel* m : {&ball_xy, &ball_z, &pos_xy, &pos_z, &heading}) m->reset();
-    for (auto& m : angle) m.reset();
-    meta_changed = kProbInit;
-  }
+  void reset();
 };
+// Every context at its start, a compile-time constant: reset() is one copy.
+inline constexpr ModelSet kInitialModelSet{};
+inline void ModelSet::reset() { *this = kInitialModelSet; }
 
 // The last residual of each value, per player: its magnitude picks the
 // activity class of the next residual of the same value.

@@ -16,18 +16,21 @@ struct DecodeIo {
                           : std::string("corrupt pose frame: ") + what + " out of range";
     return false;
   }
+  // A body that ran out is refused whatever follows (SPEC.md 4.2): the walk
+  // stops at the first value read past the end instead of walking every
+  // player on zero bytes.
   bool value(SignedModel& m, std::int32_t& v, std::int32_t pred, std::int32_t lo, std::int32_t hi, int zctx, int act,
              std::int32_t& r) {
     const std::int64_t res = decode_signed(dec, m, zctx, act);
     const std::int64_t val = pred + res;
-    if (val < lo || val > hi) return corrupt("value");
+    if (dec.overrun() || val < lo || val > hi) return corrupt("value");
     v = static_cast<std::int32_t>(val);
     r = static_cast<std::int32_t>(res);
     return true;
   }
   bool heading(SignedModel& m, std::int32_t& v, std::int32_t pred, int zctx, int act, std::int32_t& r) {
     const std::int64_t res = decode_signed(dec, m, zctx, act);
-    if (res < -kHeadingSteps / 2 || res >= kHeadingSteps / 2) return corrupt("heading");
+    if (dec.overrun() || res < -kHeadingSteps / 2 || res >= kHeadingSteps / 2) return corrupt("heading");
     v = detail::CodecModel::wrap(pred + res);
     r = static_cast<std::int32_t>(res);
     return true;

@@ -4,13 +4,6 @@
 
 namespace mc::proto {
 
-void SignedModel::reset() {
-  zero.fill(kProbInit);
-  sign.fill(kProbInit);
-  for (auto& b : bucket) b.fill(kProbInit);
-  for (auto& b : mant) b.fill(kProbInit);
-}
-
 void encode_signed(RangeEncoder& enc, SignedModel& m, std::int64_t value, int zero_ctx, int act) {
   enc.encode_bit(m.zero[static_cast<std::size_t>(zero_ctx)], value != 0);
   if (value == 0) return;

@@ -8,6 +8,7 @@
 #   scripts/fuzz.sh --seconds 10                 a quick look at every target's speed
 #   scripts/fuzz.sh --minutes 5 replay_ proto_   only targets whose name starts so
 #   scripts/fuzz.sh --minutes 5 --jobs 2         two targets at a time
+#   BUILD_JOBS=1 scripts/fuzz.sh --seconds 10    build with one compiler job
 #
 # Targets are the ctest tests labelled "fuzz" of the fuzz build (BUILD_DIR,
 # default build-fuzz, configured here like scripts/test.sh does), run with
@@ -32,7 +33,7 @@ while [[ $# -gt 0 ]]; do
     --runs) runs="$2"; shift 2 ;;
     --jobs) jobs="$2"; shift 2 ;;
     --build) build="$2"; shift 2 ;;
-    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
     *) filters+=("$1"); shift ;;
   esac
 done
@@ -46,7 +47,7 @@ if [[ ! -f $build/CMakeCache.txt ]]; then
   CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMATCHCAST_FUZZ=ON \
     ${CMAKE_CXX_COMPILER_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$CMAKE_CXX_COMPILER_LAUNCHER} >/dev/null
 fi
-cmake --build "$build" -j "$(nproc 2>/dev/null || echo 2)" --target fuzzers
+cmake --build "$build" -j "${BUILD_JOBS:-$(nproc 2>/dev/null || echo 2)}" --target fuzzers
 
 # The libraries' UBSan checks are recoverable: make the first report fatal,
 # so that undefined behaviour stops the run and leaves its input, like a crash.

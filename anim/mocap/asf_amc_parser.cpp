@@ -27,8 +27,10 @@ std::string cgspeed_name(const std::string& b) {
 
 namespace {
 
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> out;
+// The whitespace-separated tokens of `line`, into `out` (reused from line to
+// line: one allocation per file, not one per line).
+void split(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
@@ -36,7 +38,6 @@ std::vector<std::string_view> split(std::string_view line) {
     while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
     if (i > s) out.push_back(line.substr(s, i - s));
   }
-  return out;
 }
 
 // Rotation for an axis order string such as "XYZ": rotate about X first, so
@@ -79,9 +80,10 @@ AsfResult parse_asf(std::string_view text) {
   bool in_bone = false, in_limits = false;
   std::string root_axis = "XYZ";
   double root_orient[3] = {0, 0, 0};
+  std::vector<std::string_view> tok;
   while (!cur.at_end()) {
     const auto line = cur.rest_of_line();
-    auto tok = split(line);
+    split(line, tok);
     if (tok.empty() || tok[0][0] == '#') continue;
     if (tok[0][0] == ':') {
       section = std::string(tok[0]);
@@ -241,9 +243,11 @@ AmcResult parse_amc(std::string_view text, const AsfSkeleton& asf, const AmcOpti
     ++r.clip.frames;
     std::fill(pose.begin(), pose.end(), glm::quat(1, 0, 0, 0));
   };
+  std::vector<std::string_view> tok;
+  std::vector<double> vals;
   while (!cur.at_end()) {
     const auto line = cur.rest_of_line();
-    auto tok = split(line);
+    split(line, tok);
     if (tok.empty() || tok[0][0] == '#' || tok[0][0] == ':') continue;
     double v = 0;
     if (tok.size() == 1 && parse_double(tok[0], v)) {
@@ -254,7 +258,7 @@ AmcResult parse_amc(std::string_view text, const AsfSkeleton& asf, const AmcOpti
     }
     if (!in_frame) return fail("bone values before the first frame number");
     const std::string name(tok[0]);
-    std::vector<double> vals;
+    vals.clear();
     for (std::size_t i = 1; i < tok.size(); ++i) {
       if (!parse_double(tok[i], v)) return fail("bad value '" + std::string(tok[i].substr(0, 32)) + "'");
       vals.push_back(v);

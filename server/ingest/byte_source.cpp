@@ -2,6 +2,8 @@
 
 #include <zlib.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -16,6 +18,8 @@ class RawInput {
   // Returns bytes read; 0 at end or on error (error() non-empty).
   virtual std::size_t read(char* dst, std::size_t n) = 0;
   virtual const std::string& error() const = 0;
+  // Bytes left to read, when known (memory): a buffer need not be larger.
+  virtual std::size_t remaining() const { return SIZE_MAX; }
 };
 
 class FileInput final : public RawInput {
@@ -46,6 +50,7 @@ class MemoryInput final : public RawInput {
     return k;
   }
   const std::string& error() const override { return error_; }
+  std::size_t remaining() const override { return bytes_.size() - pos_; }
 
  private:
   std::string_view bytes_;
@@ -85,8 +90,10 @@ class PlainSource final : public ByteSource {
 class GzipSource final : public ByteSource {
  public:
   GzipSource(std::unique_ptr<RawInput> in, std::string prefix)
-      : in_(std::move(in)), inbuf_(kChunk) {
-    std::memcpy(inbuf_.data(), prefix.data(), prefix.size());
+      : in_(std::move(in)),
+        inbuf_size_(std::max(prefix.size(), std::min(kChunk, prefix.size() + std::min(kChunk, in_->remaining())))),
+        inbuf_(new char[inbuf_size_]) {
+    std::memcpy(inbuf_.get(), prefix.data(), prefix.size());
     avail_ = prefix.size();
     inbuf_used_ = prefix.size();
     std::memset(&zs_, 0, sizeof zs_);
@@ -110,7 +117,7 @@ class GzipSource final : public ByteSource {
         done_ = true;
         break;
       }
-      zs_.next_in = reinterpret_cast<Bytef*>(inbuf_.data() + (inbuf_used_ - avail_));
+      zs_.next_in = reinterpret_cast<Bytef*>(inbuf_.get() + (inbuf_used_ - avail_));
       zs_.avail_in = static_cast<uInt>(avail_);
       zs_.next_out = reinterpret_cast<Bytef*>(dst);
       zs_.avail_out = static_cast<uInt>(std::min<std::size_t>(n, 1u << 30));
@@ -141,14 +148,17 @@ class GzipSource final : public ByteSource {
  private:
   static constexpr std::size_t kChunk = 256 * 1024;
   void refill() {
-    const std::size_t got = in_->read(inbuf_.data(), inbuf_.size());
+    const std::size_t got = in_->read(inbuf_.get(), inbuf_size_);
     inbuf_used_ = got;
     avail_ = got;
     if (got == 0) eof_ = true;
   }
 
   std::unique_ptr<RawInput> in_;
-  std::vector<char> inbuf_;
+  // Not zeroed, and no larger than an input in memory: a small input costs
+  // a small buffer.
+  std::size_t inbuf_size_;
+  std::unique_ptr<char[]> inbuf_;
   std::size_t inbuf_used_ = 0;
   std::size_t avail_ = 0;
   bool eof_ = false, done_ = false, in_member_ = false;

@@ -37,7 +37,7 @@ JsonSplitter::Result JsonSplitter::next(std::string_view& obj, std::uint64_t& of
         const std::size_t start = w_.begin;
         w_.begin += i;
         if (skipping || i > max_object_) return Result::TooLong;
-        obj = std::string_view(w_.buf.data() + start, i);
+        obj = std::string_view(w_.buf.get() + start, i);
         return Result::Object;
       }
     }

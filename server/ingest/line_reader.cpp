@@ -12,7 +12,7 @@ LineReader::Result LineReader::next(std::string_view& line, std::uint64_t& offse
   bool skipping = false;  // inside an over-long line being dropped
   std::uint64_t skip_start = 0;
   for (;;) {
-    const char* base = w_.buf.data() + w_.begin;
+    const char* base = w_.buf.get() + w_.begin;
     const std::size_t avail = w_.end - w_.begin;
     const void* nl = avail > scan_ ? std::memchr(base + scan_, '\n', avail - scan_) : nullptr;
     if (nl != nullptr) {
@@ -46,7 +46,7 @@ LineReader::Result LineReader::next(std::string_view& line, std::uint64_t& offse
       }
       if (rest == 0) return Result::End;
       offset = w_.base + w_.begin;
-      line = std::string_view(w_.buf.data() + w_.begin, rest);
+      line = std::string_view(w_.buf.get() + w_.begin, rest);
       w_.begin = w_.end;
       scan_ = 0;
       return Result::Line;

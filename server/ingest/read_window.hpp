@@ -3,11 +3,14 @@
 // and appends the next read. Reads start small (a datagram-sized input, a
 // fuzz case) and double while they fill the buffer, up to 1 MiB per read for
 // whole game logs. Memory stays bounded by the longest record plus one read.
+// The buffer is not zeroed (only bytes read are ever looked at), and it
+// grows only when less than half a read fits: the read that finds the end
+// of a short input costs no new buffer.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+#include <memory>
 
 #include "server/ingest/byte_source.hpp"
 
@@ -22,7 +25,8 @@ struct ReadWindow {
   std::uint64_t consumed() const { return base + begin; }
 
   ByteSource& src;
-  std::vector<char> buf;
+  std::unique_ptr<char[]> buf;     // `capacity` bytes
+  std::size_t capacity;
   std::size_t read_size;           // bytes asked of the source per read
   std::size_t begin = 0, end = 0;  // unread bytes are buf[begin, end)
   std::uint64_t base = 0;          // decoded offset of buf[0]

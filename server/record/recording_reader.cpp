@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -16,6 +17,16 @@ RecordingReader::~RecordingReader() {
 }
 
 bool RecordingReader::read_at(std::uint64_t offset, std::size_t size, std::string& out, std::string& error) const {
+  // Record lengths come from the file and may claim up to 64 MiB: a large
+  // read is first cut to what the file holds past `offset`, so that a
+  // damaged length costs no buffer (zeroed, page by page) of that size.
+  if (size > (64u << 10)) {
+    struct stat st {};
+    if (::fstat(fd_, &st) == 0) {
+      const auto end = static_cast<std::uint64_t>(st.st_size);
+      size = offset >= end ? 0 : static_cast<std::size_t>(std::min<std::uint64_t>(size, end - offset));
+    }
+  }
   out.resize(size);
   std::size_t done = 0;
   while (done < size) {

@@ -43,16 +43,14 @@ struct Fixture {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const Fixture fx;
   static boost::asio::io_context ioc;
-  // One player for the whole run (its reader, encoder and channel are the
-  // heavy part), put back at the start, playing at speed 1, before each
-  // input; a fresh one every 10,000 inputs, and for the follow (time shift)
-  // mode on odd sizes.
-  static std::shared_ptr<mc::replay::ReplayPlayer> players[2];
-  static unsigned uses = 0;
+  // A fresh player (its own reader, encoder and channel) for every input,
+  // playing from the start at speed 1: nothing of one input's steering
+  // (position, pause, speed, the channel's kept messages) reaches the next,
+  // so a crashing input replays alone. Odd sizes use the follow (time
+  // shift) mode.
   const bool follow = (size & 1) != 0;
-  auto& player = players[follow];
-  if (!player || ++uses % 10000 == 0) {
-    if (player) player->close();
+  std::shared_ptr<mc::replay::ReplayPlayer> player;
+  {
     auto reader = std::make_unique<mc::record::RecordingReader>();
     std::string error;
     if (!reader->open(fx.path, error)) std::abort();
@@ -60,8 +58,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                         fx.summary, follow);
     player->start();
   }
-  player->on_client_message(R"({"type":"replay","action":"speed","speed":1})");
-  player->on_client_message(R"({"type":"replay","action":"play"})");
   const std::string_view input(reinterpret_cast<const char*>(data), size);
   std::size_t pos = 0;
   for (int n = 0; n < 8 && pos <= input.size(); ++n) {
@@ -74,5 +70,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   ioc.restart();
   ioc.poll();  // ready handlers only: the next frame's timer is 50 ms away at the least
+  player->close();
+  ioc.restart();
+  ioc.poll();  // the cancelled timer's handler, which holds the player
   return 0;
 }
