@@ -189,6 +189,13 @@ describe('the director on the page', { timeout: 420000 }, () => {
     }, '22 bodies, far from the camera', 10000);
     assert.equal(top.boxes, 0, 'skinned bodies, not boxes');
     assert.ok(top.far >= 20, `far players use the low level: ${JSON.stringify(top)}`);
+    // The picture's cost on a GPU: 22 bodies, the pitch, the stands and the
+    // HUD's 3D parts. A mid-range laptop GPU draws millions of triangles a
+    // frame at 60 frames/s; the budget here is far below that.
+    const wideDraw = (await stats(page)).draw;
+    console.log(`draw cost, top-down with 22 far bodies: ${JSON.stringify(wideDraw)}`);
+    assert.ok(wideDraw.calls > 22 && wideDraw.calls <= 200, `draw calls: ${JSON.stringify(wideDraw)}`);
+    assert.ok(wideDraw.triangles > 22 * 1000 && wideDraw.triangles <= 250000, `triangles: ${JSON.stringify(wideDraw)}`);
     // Beside the player nearest the ball, a few moments apart.
     await page.evaluate(() => window.matchcast.select(null));
     await page.keyboard.press('8');
@@ -199,6 +206,9 @@ describe('the director on the page', { timeout: 420000 }, () => {
     }
     const near = (await stats(page)).bodies;
     assert.ok(near.near >= 1, `the player beside the camera at the high level: ${JSON.stringify(near)}`);
+    const closeDraw = (await stats(page)).draw;
+    console.log(`draw cost, close-up: ${JSON.stringify(closeDraw)} with bodies ${JSON.stringify(near)}`);
+    assert.ok(closeDraw.calls <= 200 && closeDraw.triangles <= 250000, `close-up draw cost: ${JSON.stringify(closeDraw)}`);
     await page.keyboard.press('0');
     assert.deepEqual(errors, []);
   });

@@ -433,6 +433,10 @@ window.matchcast = Object.freeze({
     local: local.stats(),
     timeshift: { active: timeshift.active, paused: timeshift.paused, pos: timeshift.pos, first: timeshift.first,
       last: timeshift.last, goals: [...timeshift.goals], bytes: timeshift.bytes, speed: timeshift.speed }, sounds: sound.played, renderMs, updateMs, scale: stage.scale,
+    // What the last picture cost the GPU (three.js counts per render): the
+    // budget that decides 60 frames/s on a real GPU, which headless
+    // software rendering cannot show.
+    draw: { calls: stage.renderer.info.render.calls, triangles: stage.renderer.info.render.triangles },
   }),
   playerPositions: () => (view ? view.players.map((p) => ({ side: p.side, unum: p.unum, state: p.state,
     x: p.x, y: p.y, z: p.z, heading: p.heading })) : []),
