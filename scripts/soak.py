@@ -34,13 +34,17 @@ def free_udp_port():
 
 
 def proc_sample(pid):
-    """(RSS in kB, open file descriptors) of a process."""
-    rss = 0
+    """(RSS in kB, open file descriptors, RSS split {'anon','file'} in kB) of a process."""
+    rss, split = 0, {}
     with open(f'/proc/{pid}/status') as f:
         for line in f:
             if line.startswith('VmRSS:'):
                 rss = int(line.split()[1])
-    return rss, len(os.listdir(f'/proc/{pid}/fd'))
+            elif line.startswith('RssAnon:'):
+                split['anon'] = int(line.split()[1])
+            elif line.startswith('RssFile:'):
+                split['file'] = int(line.split()[1])
+    return rss, len(os.listdir(f'/proc/{pid}/fd')), split
 
 
 def metrics(port):
@@ -183,7 +187,7 @@ def main():
                 next_restart += a.feed_restart_every
                 log(f'feed restarted ({restarts})')
             if now >= next_sample:
-                rss, fds = proc_sample(server.pid)
+                rss, fds, split = proc_sample(server.pid)
                 t = now - start
                 # The steady point of each burst cycle: just before the next burst.
                 phase = t % a.burst_every if a.burst_every > 0 else 0
@@ -193,6 +197,7 @@ def main():
                 except Exception:  # noqa: BLE001
                     mt = {}
                 samples.append({'t': round(t, 1), 'rss_kb': rss, 'fds': fds, 'steady': steady,
+                                'anon_kb': split.get('anon', 0), 'file_kb': split.get('file', 0),
                                 'clients': mt.get('matchcast_clients')})
                 next_sample += 10
             if now >= next_replay:
@@ -216,7 +221,7 @@ def main():
             s.join(70)
         time.sleep(2)
         final_metrics = metrics(port)
-        rss_end, fds_end = proc_sample(server.pid)
+        rss_end, fds_end, _ = proc_sample(server.pid)
         server.send_signal(signal.SIGTERM)
         server.wait(30)
         feeder.send_signal(signal.SIGTERM)
@@ -252,6 +257,14 @@ def main():
     expect('RSS flat after warm-up (steady points, within 2 %)', spread('rss_kb') <= 0.02,
            f"{len(steady)} points: {min(s['rss_kb'] for s in steady) / 1024:.1f}-{max(s['rss_kb'] for s in steady) / 1024:.1f} MB "
            f"({spread('rss_kb') * 100:.2f} %)" if steady else 'no samples')
+    # Not a check, the RSS taken apart: the heap and other anonymous memory
+    # (where a leak would show), and the pages of the program's and its
+    # libraries' files (code paged in as new paths run for the first time).
+    if steady and all('anon_kb' in s for s in steady):
+        print(f"RSS at the steady points: anonymous {min(s['anon_kb'] for s in steady) / 1024:.1f}-"
+              f"{max(s['anon_kb'] for s in steady) / 1024:.1f} MB ({spread('anon_kb') * 100:.2f} %), files "
+              f"{min(s['file_kb'] for s in steady) / 1024:.1f}-{max(s['file_kb'] for s in steady) / 1024:.1f} MB "
+              f"({spread('file_kb') * 100:.2f} %)")
     expect('open fds flat after warm-up (steady points, within 2 %)', spread('fds') <= 0.02,
            f"{min(s['fds'] for s in steady)}-{max(s['fds'] for s in steady)} ({spread('fds') * 100:.2f} %)" if steady else 'no samples')
     healthy_gaps = h.get('gaps', 0) - h.get('resync_gaps', 0)
