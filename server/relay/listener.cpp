@@ -65,14 +65,22 @@ void Listener::refuse(net::ip::tcp::socket& socket) {
 }
 
 void Listener::on_accept(beast::error_code ec, net::ip::tcp::socket socket) {
-  if (ec == net::error::operation_aborted) return;  // closed
+  if (ec == net::error::operation_aborted || !acceptor_.is_open()) return;  // closed
   if (ec) {
-    // Out of file descriptors and similar: log, and try again a little
-    // later (at once would spin on the same error while the queue is full).
-    log_event("accept_failed", ec.message());
+    // Out of file descriptors and similar: log (once a second at most, with
+    // the failures since), and try again a little later: at once would spin
+    // on the same error for as long as the queue stays full.
+    ++accept_failures_;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_failure_log_ >= std::chrono::seconds(1)) {
+      log_event("accept_failed", ec.message() + " (" + std::to_string(accept_failures_) +
+                                     " failed accepts since the last such line; retrying every 50 ms)");
+      accept_failures_ = 0;
+      last_failure_log_ = now;
+    }
     retry_.expires_after(std::chrono::milliseconds(50));
     retry_.async_wait([self = shared_from_this()](beast::error_code e) {
-      if (!e) self->do_accept();
+      if (!e && self->acceptor_.is_open()) self->do_accept();  // not after close()
     });
     return;
   }

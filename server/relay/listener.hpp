@@ -7,6 +7,8 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core/error.hpp>
+#include <chrono>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -37,6 +39,8 @@ class Listener : public std::enable_shared_from_this<Listener> {
   std::size_t next_ = 0;
   boost::asio::ip::tcp::acceptor acceptor_;
   boost::asio::steady_timer retry_;  // after an accept error (out of descriptors)
+  std::uint64_t accept_failures_ = 0;  // since the last accept_failed line
+  std::chrono::steady_clock::time_point last_failure_log_{};
   const HttpContext& context_;
 };
 

@@ -1,5 +1,7 @@
 #include "server/relay/relay_server.hpp"
 
+#include <boost/asio/steady_timer.hpp>
+
 #include <boost/asio/ip/address.hpp>
 #include <cerrno>
 #include <cstdio>
@@ -37,10 +39,20 @@ bool RelayServer::start(std::string& error) {
   }
   const unsigned n = config_.threads ? config_.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<net::io_context*> iocs;
-  for (unsigned i = 0; i < n; ++i) {
-    iocs_.push_back(std::make_unique<net::io_context>(1));
-    guards_.push_back(net::make_work_guard(*iocs_.back()));
-    iocs.push_back(iocs_.back().get());
+  try {
+    for (unsigned i = 0; i < n; ++i) {
+      iocs_.push_back(std::make_unique<net::io_context>(1));
+      guards_.push_back(net::make_work_guard(*iocs_.back()));
+      iocs.push_back(iocs_.back().get());
+      // Asio makes a context's reactor (an epoll and an eventfd descriptor)
+      // when its first socket or timer is made, and throws when it cannot.
+      // Made now: not later, at a connection's socket, when the process
+      // may be out of descriptors and the throw would end the server.
+      net::steady_timer make_the_reactor(*iocs_.back());
+    }
+  } catch (const std::exception& e) {
+    error = std::string("cannot set up the I/O threads: ") + e.what();
+    return false;
   }
   for (const auto& file : files_.missing_page_files()) {
     log_event("web_page_incomplete", files_.root() + "/" + file +

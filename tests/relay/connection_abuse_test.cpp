@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdio>
 #include <chrono>
 #include <filesystem>
 #include <thread>
@@ -273,6 +274,51 @@ TEST_F(ConnectionAbuseTest, AnUpgradeFloodFromOneAddressIsRefusedAndOthersAreUna
     EXPECT_EQ(w->gaps(), 0);
     EXPECT_LT(w->longest_pause_ms(), 1000);
   }
+}
+
+// Out of file descriptors: accepting fails while the queue is full. The
+// relay logs it and tries again 50 ms later; retrying at once would spin a
+// core on the same error for as long as it lasts. When descriptors are
+// free again it accepts, and a spectator gets frames.
+TEST_F(ConnectionAbuseTest, OutOfDescriptorsTheRelayBacksOffAndThenAcceptsAgain) {
+  config_.max_connections_per_ip = 0;  // no cap: the descriptors run out first
+  start();
+  rlimit old{};
+  ASSERT_EQ(::getrlimit(RLIMIT_NOFILE, &old), 0);
+  std::size_t open_now = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator("/proc/self/fd")) ++open_now;
+  rlimit low = old;
+  low.rlim_cur = open_now + 60;
+  ASSERT_EQ(::setrlimit(RLIMIT_NOFILE, &low), 0);
+  // Connections until this process (test and relay share it) has no
+  // descriptor left: the last ones wait in the relay's listen queue.
+  for (int i = 0; i < 200; ++i) {
+    const int fd = raw_connect("127.0.0.3", server_->port());
+    if (fd < 0) break;
+    sockets_.push_back(fd);
+  }
+  ASSERT_LT(sockets_.size(), 200u) << "the descriptors never ran out";
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const auto cpu_seconds = [] {
+    rusage u{};
+    ::getrusage(RUSAGE_SELF, &u);
+    return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+           static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
+  };
+  const double before = cpu_seconds();
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  const double used = cpu_seconds() - before;
+  std::printf("out of descriptors for 1 s with %zu connections: %.3f s of CPU\n", sockets_.size(), used);
+  EXPECT_LT(used, 0.3) << "the relay spins on the failing accept";
+  for (int fd : sockets_) ::close(fd);
+  sockets_.clear();
+  ASSERT_EQ(::setrlimit(RLIMIT_NOFILE, &old), 0);
+  Watcher w(server_->port(), "127.0.0.4");
+  const auto deadline = Clock::now() + std::chrono::seconds(5);
+  while (w.frames() < 20 && !w.failed() && Clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_FALSE(w.failed());
+  EXPECT_GE(w.frames(), 20) << "no frames after the descriptors came back";
 }
 
 }  // namespace
