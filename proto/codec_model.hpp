@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "proto/quantizer.hpp"
 #include "proto/residual_coder.hpp"
@@ -86,6 +87,36 @@ struct PartnerTable {
     return t >= 0 ? (t + 1) / 2 : -((-t + 1) / 2);
   }
 };
+
+// The table an encoder sends in its next keyframe, from what it has seen:
+// base_cost[d], the bits of dof d's residuals with no partner, and
+// partner_cost[(d * kMaxDof + p) * 8 + k], with partner p at kPartnerCoef2[k].
+// Then those statistics fade: half weight per keyframe interval. (The
+// encoder and the format study in tests/proto/bench both call it, so that
+// the study measures the encoder's rule.)
+inline PartnerTable choose_partners(std::vector<std::uint64_t>& base_cost, std::vector<std::uint32_t>& partner_cost,
+                                    int dofs) {
+  const auto n = static_cast<std::size_t>(kMaxDof);
+  PartnerTable t;
+  for (int d = 0; d < dofs; ++d) {
+    const auto dd = static_cast<std::size_t>(d);
+    // A partner must save 5% of the dof's bits: the table costs 9 bits per
+    // entry per keyframe, and a marginal gain is noise.
+    std::uint64_t best = base_cost[dd] - base_cost[dd] / 20;
+    for (int p = 0; p < d; ++p)
+      for (std::size_t k = 0; k < 8; ++k) {
+        const std::uint32_t c = partner_cost[(dd * n + static_cast<std::size_t>(p)) * 8 + k];
+        if (c < best) {
+          best = c;
+          t.partner[dd] = static_cast<std::int8_t>(p);
+          t.coef2[dd] = kPartnerCoef2[k];
+        }
+      }
+  }
+  for (auto& c : partner_cost) c >>= 1;
+  for (auto& c : base_cost) c >>= 1;
+  return t;
+}
 
 struct CodecModel {
   ModelSet key, delta;

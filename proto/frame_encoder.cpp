@@ -81,28 +81,7 @@ void FrameEncoder::learn_partners() {
 }
 
 void FrameEncoder::choose_partners() {
-  const int dofs = quant_.dof_count();
-  const auto n = static_cast<std::size_t>(kMaxDof);
-  detail::PartnerTable t;
-  for (int d = 0; d < dofs; ++d) {
-    const auto dd = static_cast<std::size_t>(d);
-    // A partner must save 5% of the dof's bits: the table costs 9 bits per
-    // entry per keyframe, and a marginal gain is noise.
-    std::uint64_t best = base_cost_[dd] - base_cost_[dd] / 20;
-    for (int p = 0; p < d; ++p)
-      for (std::size_t k = 0; k < 8; ++k) {
-        const std::uint32_t c = partner_cost_[(dd * n + static_cast<std::size_t>(p)) * 8 + k];
-        if (c < best) {
-          best = c;
-          t.partner[dd] = static_cast<std::int8_t>(p);
-          t.coef2[dd] = detail::kPartnerCoef2[k];
-        }
-      }
-  }
-  model_.partners = t;
-  // Older statistics fade: half weight per keyframe interval.
-  for (auto& c : partner_cost_) c >>= 1;
-  for (auto& c : base_cost_) c >>= 1;
+  model_.partners = detail::choose_partners(base_cost_, partner_cost_, quant_.dof_count());
 }
 
 FrameEncoder::FrameEncoder(const SkeletonDef& skeleton, EncoderOptions options)

@@ -207,24 +207,9 @@ Costs measure(const Game& g, int keyframe_interval, Study& study) {
     QuantFrame qf = q[t];
     if (key) {
       model.reset_for_keyframe();
-      detail::PartnerTable pt;  // FrameEncoder::choose_partners
-      for (int d = 0; d < dofs; ++d) {
-        const auto dd = static_cast<std::size_t>(d);
-        std::uint64_t best = base_cost[dd] - base_cost[dd] / 20;
-        for (int p = 0; p < d; ++p)
-          for (std::size_t k = 0; k < 8; ++k) {
-            const std::uint32_t cc = partner_cost[(dd * n + static_cast<std::size_t>(p)) * 8 + k];
-            if (cc < best) {
-              best = cc;
-              pt.partner[dd] = static_cast<std::int8_t>(p);
-              pt.coef2[dd] = detail::kPartnerCoef2[k];
-            }
-          }
-      }
+      detail::PartnerTable pt = detail::choose_partners(base_cost, partner_cost, dofs);  // the encoder's rule
       if (study.no_partners) pt = detail::PartnerTable{};
       model.partners = pt;
-      for (auto& x : partner_cost) x >>= 1;
-      for (auto& x : base_cost) x >>= 1;
       // Keyframe: 32 fingerprint bits, then the walk (players opened by direct bits).
       io.bits += 32;
       io.book(kMeta);
