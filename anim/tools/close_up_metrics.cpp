@@ -247,7 +247,7 @@ std::string who(const PoseFrame& f, int k, int m, const PlayerPose& p, const cha
 }  // namespace
 
 CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldState>& states,
-                               const std::vector<PoseFrame>& produced, int draws_per_frame) {
+                               const std::vector<PoseFrame>& produced, int draws_per_frame, bool leg_blend) {
   CloseUpReport r;
   const int m = std::max(1, draws_per_frame);
   r.draws_per_frame = m;
@@ -289,12 +289,29 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
   if (const char* t = std::getenv("MATCHCAST_CLOSEUP_TRACE"))
     if (std::sscanf(t, "%d %u %u", &trace_slot, &trace_from, &trace_to) != 3) trace_slot = -1;
   PoseFrame drawn;
+  const LegBlend legs(skel);
+  // MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the drawn grounded pairs by whether
+  // the foot is on the grass in the 20 Hz frames around them (stderr).
+  const bool breakdown = m > 1 && std::getenv("MATCHCAST_CLOSEUP_BREAKDOWN");
+  std::vector<std::array<std::array<bool, 2>, kMaxPlayers>> g20;
+  if (breakdown) {
+    g20.resize(frames.size());
+    Geom gg;
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      for (std::size_t p = 0; p < kMaxPlayers; ++p) {
+        pose(skel, rig, frames[i].players[p], gg);
+        for (int s = 0; s < 2; ++s) g20[i][p][static_cast<std::size_t>(s)] = gg.active && gg.feet[s].grounded;
+      }
+  }
+  double bd_sum[4] = {0, 0, 0, 0};
+  long bd_n[4] = {0, 0, 0, 0};
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int subs = i + 1 < frames.size() ? m : 1;
     for (int k = 0; k < subs; ++k) {
       const PoseFrame* fp = &frames[i];
       if (k > 0) {
-        blend_like_clients(frames[i], frames[i + 1], static_cast<float>(k) / static_cast<float>(m), dofs, drawn);
+        blend_like_clients(frames[i], frames[i + 1], static_cast<float>(k) / static_cast<float>(m), dofs, drawn,
+                           leg_blend ? &legs : nullptr);
         fp = &drawn;
       }
       const PoseFrame& f = *fp;
@@ -397,6 +414,12 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             const glm::vec3 pb(g.world[static_cast<std::size_t>(j)] * glm::vec4(fa.contact_ls, 1.0f));
             const double v = std::hypot(pb.x - pa.x, pb.z - pa.z) / dt;
             r.grounded_mps[static_cast<std::size_t>(band)].values.push_back(v);
+            if (breakdown && band >= 4) {
+              const std::size_t hi = std::min(lo + 1, frames.size() - 1);
+              const int c = (g20[lo][p][static_cast<std::size_t>(s)] ? 2 : 0) + (g20[hi][p][static_cast<std::size_t>(s)] ? 1 : 0);
+              bd_sum[c] += v;
+              ++bd_n[c];
+            }
             if (slides_over > 0 && v > slides_over)
               std::fprintf(stderr, "slide %.2f m/s seq %u+%d slot %zu foot %d root %.1f m/s low %.3f -> %.3f\n", v, f.seq, k, p,
                            s, root_v, fa.lowest, fb.lowest);
@@ -562,6 +585,14 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
       r.step_in_m.values.push_back(std::hypot(pp.x - 0.5 * (a.x + c.x), pp.y - 0.5 * (a.y + c.y)));
     }
     ++r.kicks;
+  }
+  if (breakdown) {
+    const char* names[4] = {"air -> air", "air -> grass", "grass -> air", "grass -> grass"};
+    double total = 0;
+    for (double x : bd_sum) total += x;
+    for (int c = 0; c < 4; ++c)
+      std::fprintf(stderr, "drawn grounded pairs, root >= 3 m/s, 20 Hz feet %s: %ld pairs, mean %.2f m/s, %.0f %% of the sliding\n",
+                   names[c], bd_n[c], bd_n[c] ? bd_sum[c] / static_cast<double>(bd_n[c]) : 0.0, total > 0 ? 100 * bd_sum[c] / total : 0.0);
   }
   return r;
 }

@@ -6,13 +6,16 @@
 //
 //   matchcast-anim-quality [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR]
 //                          [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N]
-//                          [--detail none|run|kick|full] LOG...
+//                          [--detail none|run|kick|full] [--leg-blend] LOG...
 //
 // --mode mocap takes the kicks and slow walking from the CMU clips
 // (anim/motion_source.hpp; the motion graph is cached in --mocap-cache);
 // --compare animates each log in both modes and prints the metrics side by
 // side (the picture then shows the mocap mode). --draw-rate: the clients'
-// drawing rate measured beside the 20 Hz frames (a multiple of 20, default 60).
+// drawing rate measured beside the 20 Hz frames (a multiple of 20, default 60);
+// --leg-blend draws it with the planted legs re-aimed (anim/leg_blend.hpp),
+// which the clients do not do yet; MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the
+// drawn frames' sliding by the 20 Hz feet around them (stderr).
 // --contact-sheet: the close-up contact sheet of the first log (a sprint, a
 // kick, a turn, every frame of a second, contact_sheet.hpp), default
 // test-output/anim/contact-sheet.png.
@@ -145,6 +148,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> logs;
   std::string mode = "keyframe", mocap_dir = MATCHCAST_DEFAULT_MOCAP_DIR, mocap_cache = MATCHCAST_DEFAULT_MOCAP_CACHE;
   bool compare = false;
+  bool leg_blend = false;
   int draw_rate = 60;
   std::string sheet = "test-output/anim/contact-sheet.png";
   for (int i = 1; i < argc; ++i) {
@@ -156,6 +160,7 @@ int main(int argc, char** argv) {
     else if (arg == "--mode" && i + 1 < argc && (std::string(argv[i + 1]) == "keyframe" || std::string(argv[i + 1]) == "mocap"))
       mode = argv[++i];
     else if (arg == "--compare") compare = true;
+    else if (arg == "--leg-blend") leg_blend = true;
     else if (arg == "--mocap-dir" && i + 1 < argc) mocap_dir = argv[++i];
     else if (arg == "--mocap-cache" && i + 1 < argc) mocap_cache = argv[++i];
     else if (arg == "--detail" && i + 1 < argc) {
@@ -166,7 +171,7 @@ int main(int argc, char** argv) {
       }
       cfg.detail = *d;
     } else if (!arg.empty() && arg[0] == '-') {
-      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] [--leg-blend] LOG...\n", argv[0]);
       return 2;
     } else {
       logs.push_back(arg);
@@ -177,7 +182,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (logs.empty()) {
-    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] LOG...\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] [--leg-blend] LOG...\n", argv[0]);
     return 2;
   }
   // Mocap mode: the caller loads the clips, the animator stays pure.
@@ -220,7 +225,7 @@ int main(int argc, char** argv) {
         sheet.clear();  // the first log's
       }
       const CloseUpReport r20 = measure_close_up(view, x.states, x.frames, 1);
-      const CloseUpReport rd = measure_close_up(view, x.states, x.frames, draw_rate / 20);
+      const CloseUpReport rd = measure_close_up(view, x.states, x.frames, draw_rate / 20, leg_blend);
       std::printf("== %s%s (%zu frames, %zu kicks, %.0f B/frame on the wire)\n%s", log.c_str(), label, view.frames.size(),
                   view.kicks.size(), static_cast<double>(view.encoded_bytes) / static_cast<double>(std::max<std::size_t>(1, view.frames.size())),
                   format_close_up({&r20, &rd}).c_str());

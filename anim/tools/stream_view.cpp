@@ -42,7 +42,8 @@ bool view_stream(const SkeletonDef& skeleton, const GameParams& params, const st
   return true;
 }
 
-void blend_like_clients(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out) {
+void blend_like_clients(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out,
+                        const LegBlend* legs) {
   auto lerp = [](float p, float q, float s) { return p + (q - p) * s; };
   out.seq = a.seq;
   out.time = a.time;
@@ -74,6 +75,7 @@ void blend_like_clients(const PoseFrame& a, const PoseFrame& b, float t, int dof
     for (int k = 0; k < n; ++k)
       o.angles[static_cast<std::size_t>(k)] = lerp(pa.angles[static_cast<std::size_t>(k)], pb.angles[static_cast<std::size_t>(k)], tt);
   }
+  if (legs) legs->apply(a, b, t, out);
 }
 
 }  // namespace mc::anim::tools

@@ -11,13 +11,16 @@
 // Drawn frames: the page and the native viewer draw at the display's rate
 // and blend two 20 Hz frames linearly (web/src/model/interp.js,
 // viewer/interpolate.cpp); blend_like_clients() is that blend, so that the
-// same metrics can be taken at the drawing rate.
+// same metrics can be taken at the drawing rate. With a LegBlend it also
+// re-aims the planted legs (anim/leg_blend.hpp), a step the clients do not
+// take yet: the tool's --leg-blend measures what it would give.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "anim/anim_events.hpp"
+#include "anim/leg_blend.hpp"
 #include "proto/control_messages.hpp"
 #include "proto/game_params.hpp"
 #include "proto/pose_frame.hpp"
@@ -42,7 +45,9 @@ bool view_stream(const SkeletonDef& skeleton, const GameParams& params, const st
 // The clients' blend of two consecutive frames at t in [0, 1): positions and
 // angles linearly, the heading the short way round, a player whose root
 // jumps more than 5 m held at `a` up to t = 0.5 and at `b` after
-// (interp.js's teleport rule); seq, time and state from `a`.
-void blend_like_clients(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out);
+// (interp.js's teleport rule); seq, time and state from `a`. Then `legs`,
+// when given, re-aims the planted legs (null: the clients' blend).
+void blend_like_clients(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out,
+                        const LegBlend* legs);
 
 }  // namespace mc::anim::tools
