@@ -198,7 +198,9 @@ def main():
                     mt = {}
                 samples.append({'t': round(t, 1), 'rss_kb': rss, 'fds': fds, 'steady': steady,
                                 'anon_kb': split.get('anon', 0), 'file_kb': split.get('file', 0),
-                                'clients': mt.get('matchcast_clients')})
+                                'clients': mt.get('matchcast_clients'),
+                                'heap_in_use': mt.get('matchcast_heap_in_use_bytes'),
+                                'heap_free': mt.get('matchcast_heap_free_bytes')})
                 next_sample += 10
             if now >= next_replay:
                 try:
@@ -265,6 +267,15 @@ def main():
               f"{max(s['anon_kb'] for s in steady) / 1024:.1f} MB ({spread('anon_kb') * 100:.2f} %), files "
               f"{min(s['file_kb'] for s in steady) / 1024:.1f}-{max(s['file_kb'] for s in steady) / 1024:.1f} MB "
               f"({spread('file_kb') * 100:.2f} %)")
+    # Not a check either: the heap as glibc counts it. A leak grows what is
+    # in use; what is free inside the heap is fragmentation the trims leave.
+    if steady and all(s.get('heap_in_use') for s in steady):
+        print(f"heap at the steady points: in use {min(s['heap_in_use'] for s in steady) / 2**20:.2f}-"
+              f"{max(s['heap_in_use'] for s in steady) / 2**20:.2f} MB, free inside it "
+              f"{min(s['heap_free'] for s in steady) / 2**20:.2f}-{max(s['heap_free'] for s in steady) / 2**20:.2f} MB")
+    if final_metrics.get('matchcast_heap_trims_total'):
+        print(f"heap trims: {final_metrics['matchcast_heap_trims_total']:.0f}, "
+              f"{final_metrics.get('matchcast_heap_trim_seconds_total', 0) * 1e3 / final_metrics['matchcast_heap_trims_total']:.2f} ms each on average")
     expect('open fds flat after warm-up (steady points, within 2 %)', spread('fds') <= 0.02,
            f"{min(s['fds'] for s in steady)}-{max(s['fds'] for s in steady)} ({spread('fds') * 100:.2f} %)" if steady else 'no samples')
     healthy_gaps = h.get('gaps', 0) - h.get('resync_gaps', 0)

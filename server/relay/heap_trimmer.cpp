@@ -24,18 +24,23 @@ bool HeapTrimmer::trim() {
 #endif
 }
 
+void HeapTrimmer::trim_now() {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!trim()) return;
+  ++stats_.heap_trims;
+  stats_.heap_trim_us += static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - t0).count());
+}
+
 void HeapTrimmer::arm() {
   timer_.expires_after(kPeriod);
   timer_.async_wait([self = shared_from_this()](boost::system::error_code ec) {
     if (ec) return;  // stopped
     const std::uint64_t now = churn(self->stats_);
-    const bool since_trim = now != self->churn_at_last_trim_;
-    const bool burst_over = now == self->churn_at_last_tick_;
-    if (since_trim && (burst_over || now - self->churn_at_last_trim_ >= kMinChurn)) {
-      trim();
+    if (now != self->churn_at_last_trim_) {
+      self->trim_now();
       self->churn_at_last_trim_ = now;
     }
-    self->churn_at_last_tick_ = now;
     self->arm();
   });
 }

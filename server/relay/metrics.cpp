@@ -3,6 +3,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 namespace mc::relay {
 namespace {
 
@@ -44,6 +48,16 @@ std::string render_metrics(const RelayStats& s, const ChannelRegistry& channels)
   counter(o, "matchcast_inbound_rejected_total", "Spectator messages over the size or rate limit", s.inbound_rejected.load());
   counter(o, "matchcast_http_requests_total", "HTTP requests", s.http_requests.load());
   counter(o, "matchcast_queue_bytes", "Bytes waiting in all spectators' send queues", static_cast<std::uint64_t>(std::max<std::int64_t>(0, s.queued_bytes.load())), "gauge");
+  counter(o, "matchcast_heap_trims_total", "Free heap pages given back to the system (malloc_trim)", s.heap_trims.load());
+  o << "# HELP matchcast_heap_trim_seconds_total Time the heap trims took\n# TYPE matchcast_heap_trim_seconds_total counter\n"
+    << "matchcast_heap_trim_seconds_total " << static_cast<double>(s.heap_trim_us.load()) / 1e6 << '\n';
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+  // What the heap holds for the program and what it keeps free: a leak
+  // grows the first, fragmentation the second.
+  const struct mallinfo2 mi = ::mallinfo2();
+  counter(o, "matchcast_heap_in_use_bytes", "Heap bytes allocated by the program (mallinfo2)", mi.uordblks + mi.hblkhd, "gauge");
+  counter(o, "matchcast_heap_free_bytes", "Heap bytes free inside the heap's arenas (mallinfo2)", mi.fordblks, "gauge");
+#endif
 
   o << "# HELP matchcast_frame_delay_ms Publish to end of write, per spectator frame\n"
        "# TYPE matchcast_frame_delay_ms histogram\n";

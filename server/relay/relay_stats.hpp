@@ -64,6 +64,10 @@ struct RelayStats {
   std::atomic<std::uint64_t> inbound_rejected{0};
   std::atomic<std::uint64_t> refused_per_ip{0};
   std::atomic<std::uint64_t> refused_origin{0};
+  // Heap trims (HeapTrimmer) and the time they took: what keeping the RSS
+  // down after connections come and go costs the I/O thread.
+  std::atomic<std::uint64_t> heap_trims{0};
+  std::atomic<std::uint64_t> heap_trim_us{0};
 
   // Frame delay inside the relay: from publish to the end of its write to a
   // spectator, as a Prometheus histogram (upper bounds in ms, last = +Inf).

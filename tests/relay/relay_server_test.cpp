@@ -351,6 +351,32 @@ TEST_F(RelayServerTest, MetricsExposeClientsFramesAndDelay) {
   EXPECT_NE(body.find("# TYPE matchcast_frame_delay_ms histogram"), std::string::npos);
 }
 
+TEST_F(RelayServerTest, TheHeapIsTrimmedWithinSecondsOfConnectionsComingAndGoing) {
+  start();
+  const auto at_start = server_->stats().heap_trims.load();  // the trim at start, on glibc
+  {
+    WsTestClient c(server_->port());
+    c.read();
+    wait_for_subscribers(1);
+  }
+  // One trim a second while connections come and go: a steady churn must
+  // not leave garbage in the heap for long (the soak's RSS check).
+  for (int i = 0; i < 300 && server_->stats().heap_trims.load() == at_start; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+#if defined(__GLIBC__)
+  EXPECT_GT(server_->stats().heap_trims.load(), at_start);
+  const std::string body = get("/metrics").body();
+  EXPECT_NE(body.find("\nmatchcast_heap_in_use_bytes "), std::string::npos) << body;
+  EXPECT_NE(body.find("\nmatchcast_heap_free_bytes "), std::string::npos) << body;
+  EXPECT_NE(body.find("\nmatchcast_heap_trims_total "), std::string::npos) << body;
+#endif
+  // With nothing coming or going, no more trims.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1200));
+  const auto settled = server_->stats().heap_trims.load();
+  std::this_thread::sleep_for(std::chrono::milliseconds(2200));
+  EXPECT_EQ(server_->stats().heap_trims.load(), settled);
+}
+
 TEST_F(RelayServerTest, PerAddressLimitRefusesTheExtraConnection) {
   config_.max_connections_per_ip = 2;
   start();
