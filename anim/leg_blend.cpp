@@ -78,7 +78,8 @@ constexpr int kSoleIterations = 2;
 
 }  // namespace
 
-LegBlend::LegBlend(const SkeletonDef& skeleton) : skeleton_(skeleton) {
+LegBlend::LegBlend(const SkeletonDef& skeleton, bool lift_and_land)
+    : skeleton_(skeleton), lift_and_land_(lift_and_land) {
   const auto& joints = skeleton.joints;
   std::vector<int> first(joints.size(), 0);
   for (std::size_t i = 1; i < joints.size(); ++i)
@@ -158,11 +159,27 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
   const FieldOf body{BodyFrame(o.x, o.y, o.heading)};
   for (const Leg& leg : leg_) {
     const FootPlace fa = place(leg, pa), fb = place(leg, pb);
-    // Only a foot that stands on the grass in both frames: a swinging
-    // foot's arc is the angle blend's own, and a straight line would cut
-    // it short (and turn the hip far from the frames' motion).
-    if (fa.sole >= kContactM || fb.sole >= kContactM || glm::length(fb.ankle - fa.ankle) >= kSameStanceM) continue;
-    const glm::vec3 ankle = body.to_body_point(fa.ankle + (fb.ankle - fa.ankle) * t);
+    // A foot on the grass in both frames keeps to the line between its two
+    // places. With lift_and_land, a leaving foot also stays until its sole
+    // clears the grass and a landing one arrives before it touches. A foot
+    // in the air in both keeps the angle blend's arc, which a straight line
+    // would cut short (and turn the hip far from the frames' motion).
+    const bool ca = fa.sole < kContactM, cb = fb.sole < kContactM;
+    float across = t;  // how far along the way the ankle is over the grass
+    if (ca && cb) {
+      if (glm::length(fb.ankle - fa.ankle) >= kSameStanceM) continue;
+    } else if (!lift_and_land_ || (!ca && !cb)) {
+      continue;
+    } else if (ca) {  // lift-off: on the spot until the sole clears
+      const float clear = std::clamp((kContactM - fa.sole) / std::max(1e-4f, fb.sole - fa.sole), 0.0f, 1.0f);
+      across = t <= clear ? 0.0f : (t - clear) / std::max(1e-4f, 1.0f - clear);
+    } else {  // touch-down: there before the sole reaches the grass
+      const float touch = std::clamp((fa.sole - kContactM) / std::max(1e-4f, fa.sole - fb.sole), 0.0f, 1.0f);
+      across = t >= touch ? 1.0f : t / std::max(1e-4f, touch);
+    }
+    glm::vec3 way = fa.ankle + (fb.ankle - fa.ankle) * across;
+    way.y = fa.ankle.y + (fb.ankle.y - fa.ankle.y) * t;
+    const glm::vec3 ankle = body.to_body_point(way);
     const glm::vec3 forward = glm::normalize(body.to_body_direction(fa.forward + (fb.forward - fa.forward) * t));
     const glm::vec3 up = glm::normalize(body.to_body_direction(fa.up + (fb.up - fa.up) * t));
 

@@ -29,7 +29,10 @@ namespace mc::anim {
 
 class LegBlend {
  public:
-  explicit LegBlend(const SkeletonDef& skeleton);
+  // `lift_and_land`: also the interval in which a foot leaves the grass
+  // or lands on it (the foot stays until its sole clears the grass, or
+  // arrives before it touches); otherwise only a foot on the grass in both.
+  explicit LegBlend(const SkeletonDef& skeleton, bool lift_and_land = false);
 
   // True when both legs were found.
   bool ready() const { return legs_ == 2; }
@@ -56,6 +59,7 @@ class LegBlend {
   const SkeletonDef& skeleton_;
   std::array<Leg, 2> leg_{};
   int legs_ = 0;
+  bool lift_and_land_ = false;
 };
 
 }  // namespace mc::anim

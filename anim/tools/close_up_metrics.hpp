@@ -130,11 +130,12 @@ struct CloseUpReport {
 // more). `states`: the log's 10 Hz states (root error at cycles, by
 // seq / 2); `produced`: the animator's frames before encoding (joint limits).
 // Drawn frames between two 20 Hz ones are blended as the clients do (joint
-// angles linearly); `leg_blend` also re-aims the legs whose foot stands on
-// the grass in both frames (anim/leg_blend.hpp), which the clients do not
-// do yet: a study of what it would give.
+// angles linearly); `leg_blend` 1 also re-aims the legs whose foot stands
+// on the grass in both frames (anim/leg_blend.hpp), 2 also those of a foot
+// leaving or landing, which the clients do not do yet: a study of what it
+// would give.
 CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldState>& states,
-                               const std::vector<PoseFrame>& produced, int draws_per_frame, bool leg_blend = false);
+                               const std::vector<PoseFrame>& produced, int draws_per_frame, int leg_blend = 0);
 
 // The report as a table: one column per report (20 Hz, then the drawing rate).
 std::string format_close_up(const std::vector<const CloseUpReport*>& reports);

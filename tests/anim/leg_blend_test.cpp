@@ -15,7 +15,7 @@ namespace {
 
 // A player at field (x, 0) facing +x whose feet are at the given body-space
 // ankles (pelvis 0.93 m up, leaning a little forward).
-PlayerPose stance(float x, float right_ankle_x, float left_ankle_x, float left_ankle_h) {
+PlayerPose stance(float x, float right_ankle_x, float left_ankle_x, float left_ankle_h, float right_ankle_h = 0.08f) {
   PlayerPose p;
   p.side = Side::Left;
   p.unum = 7;
@@ -24,7 +24,7 @@ PlayerPose stance(float x, float right_ankle_x, float left_ankle_x, float left_a
   p.angles[dof::kPelvis + 1] = -6;
   LegPoseJob job;
   job.pelvis_height = p.z;
-  job.feet[0].ankle_ms[0] = right_ankle_x; job.feet[0].ankle_ms[1] = 0.08f; job.feet[0].ankle_ms[2] = 0.11f;
+  job.feet[0].ankle_ms[0] = right_ankle_x; job.feet[0].ankle_ms[1] = right_ankle_h; job.feet[0].ankle_ms[2] = 0.11f;
   job.feet[1].ankle_ms[0] = left_ankle_x; job.feet[1].ankle_ms[1] = left_ankle_h; job.feet[1].ankle_ms[2] = -0.11f;
   job.angles = std::span<float>(p.angles.data(), p.angles.size());
   EXPECT_TRUE(job.Run());
@@ -70,6 +70,23 @@ TEST(LegBlend, APlantedFootStaysOnItsSpotBetweenFrames) {
   }
   // Without it the planted foot would move (what the test is about).
   EXPECT_GT(blend_error, 0.005f);
+}
+
+TEST(LegBlend, WithLiftAndLandALeavingFootStaysUntilItsSoleClearsTheGrass) {
+  // The right foot leaves the grass: on it in a, 0.25 m forward and 0.14 m
+  // up in b.
+  const PlayerPose a = stance(0.0f, 0.15f, -0.35f, 0.25f);
+  const PlayerPose b = stance(0.3f, 0.1f, 0.05f, 0.22f, 0.22f);
+  const float t = 0.15f;  // early: the sole is still within 3 cm of the grass
+  const PlayerPose blended = angle_blend(a, b, t);
+  PlayerPose planted_only = blended, lift = blended;
+  LegBlend(human_skeleton(), false).apply(a, b, t, planted_only);
+  LegBlend(human_skeleton(), true).apply(a, b, t, lift);
+  EXPECT_EQ(planted_only.angles, blended.angles);  // not on the grass in both: left alone
+  const glm::vec3 start = ankle(a, 0);
+  auto across = [&](const PlayerPose& p) { return std::hypot(ankle(p, 0).x - start.x, ankle(p, 0).z - start.z); };
+  EXPECT_GT(across(blended), 0.02f);  // the angle blend drags it forward
+  EXPECT_LT(across(lift), 0.005f);
 }
 
 TEST(LegBlend, TheFramesThemselvesAndTeleportsAreLeftAlone) {
