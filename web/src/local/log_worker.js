@@ -1,6 +1,6 @@
 // The Web Worker that turns a log into the broadcast, off the page's main
 // thread: it streams the file (or URL), gunzips it with the browser's
-// DecompressionStream, and feeds the bytes to the WebAssembly module
+// DecompressionStream (inflate.js: nothing before a cut is lost), and feeds the bytes to the WebAssembly module
 // (wasm/log_module.cpp: the server's ingest readers, anim/ and the proto
 // encoder), a few megabytes ahead of the reader. What the module makes goes
 // to the page as it is made, so the game plays while the rest is animated.
@@ -15,6 +15,7 @@
 //                   { type: 'error', message, status }  it cannot go on; what went out stays valid
 // The page ends a log by terminating the worker.
 import createLogModule from '../../wasm/matchcast-log.js';
+import { gunzipReader } from './inflate.js';
 
 // A game log is 5 to 40 MB (1 to 4 MB gzipped); these bound the work and
 // the memory a wrong file can take.
@@ -58,26 +59,27 @@ async function openInput({ file, url }) {
   return { stream: res.body, total };
 }
 
-// Counts the raw bytes that go by; the first chunk tells gzip from plain.
-async function decodedStream(stream, counter) {
+// A reader of the log's bytes, gunzipped if they are gzip (the first chunk
+// tells), counting the raw bytes that go by.
+async function decodedReader(stream, counter) {
   const reader = stream.getReader();
   const first = await reader.read();
   const head = first.done ? new Uint8Array(0) : first.value;
-  const raw = new ReadableStream({
-    start(c) {
-      if (head.length) { counter.raw += head.length; c.enqueue(head); }
-      if (first.done) c.close();
-    },
-    async pull(c) {
-      const { value, done } = await reader.read();
-      if (done) { c.close(); return; }
-      counter.raw += value.length;
-      c.enqueue(value);
-    },
-    cancel(reason) { return reader.cancel(reason); },
-  });
   const gzip = head.length >= 2 && head[0] === 0x1f && head[1] === 0x8b;
-  return { stream: gzip ? raw.pipeThrough(new DecompressionStream('gzip')) : raw, gzip };
+  if (gzip) return { reader: gunzipReader(reader, head, (n) => { counter.raw += n; }), gzip };
+  let pending = head.length ? head : null;
+  counter.raw += head.length;
+  const plain = {
+    async read() {
+      if (pending) { const value = pending; pending = null; return { value, done: false }; }
+      if (first.done) return { value: undefined, done: true };
+      const r = await reader.read();
+      if (!r.done) counter.raw += r.value.length;
+      return r;
+    },
+    cancel: (reason) => reader.cancel(reason),
+  };
+  return { reader: plain, gzip };
 }
 
 async function run({ file, url, name, options = {} }) {
@@ -87,7 +89,7 @@ async function run({ file, url, name, options = {} }) {
   });
   const input = await openInput({ file, url });
   const counter = { raw: 0 };
-  const { stream, gzip } = await decodedStream(input.stream, counter);
+  const { reader, gzip } = await decodedReader(input.stream, counter);
   const mod = await modReady;
   self.postMessage({ type: 'ready', ms: performance.now() - t0 });
 
@@ -106,7 +108,6 @@ async function run({ file, url, name, options = {} }) {
     mod._free(p);
   };
 
-  const reader = stream.getReader();
   let decoded = 0, ended = false, steps = 0, lastProgress = 0;
   for (;;) {
     while (!ended && mod._mc_wants(s) > 0) {
@@ -116,7 +117,7 @@ async function run({ file, url, name, options = {} }) {
       } catch (err) {
         // A cut or corrupt gzip stream: play what came before it.
         end(`the file's ${gzip ? 'gzip data ends' : 'data ends'} early, after ${mb(decoded)} of log` +
-          ` (${String(err?.message ?? 'read error').replace(/\.$/, '')})`);
+          ` (${String(err?.message ?? 'read error').replace(/^Failed to execute '[^']*' on '[^']*': /, '').replace(/\.$/, '')})`);
         ended = true;
         break;
       }
