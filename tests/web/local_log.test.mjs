@@ -1,16 +1,20 @@
 // The page as a static site (python3 -m http.server -d web, no Matchcast
 // server) opens logs by itself: the bundled game chosen in the file input
-// has its first frame ready within a second (the picture then waits for
-// WebGL to compile the players' shaders), at the log's positions,
-// and is wholly animated within 5 s, with no WebSocket opened (screenshot
-// local-log.png). Then a v3 binary log, a JSON log dropped onto the page, a
+// has its first frame ready (the picture then waits for WebGL to compile
+// the players' shaders), at the log's positions, and is wholly animated,
+// with no WebSocket opened (screenshot local-log.png); the test prints how
+// long each took. Then a v3 binary log, a JSON log dropped onto the page, a
 // random file, a cut .rcg.gz, a log given as ?log=URL and a 2 GB file: each
 // plays or gets its message.
 //
 // Needs web/wasm/ (scripts/build-wasm.sh); without it the test is skipped
-// (exit 77, ctest's SKIP_RETURN_CODE). MATCHCAST_LOCAL_FIRST_MS and
-// MATCHCAST_LOCAL_ALL_MS loosen the time limits (1000, 5000) on a machine
-// busier than the one they were set on.
+// (exit 77, ctest's SKIP_RETURN_CODE). The times are figures, not tests
+// (the brief: speed targets live in benchmarks; on CI's busy 2 cores this
+// run beside others took 6.9 s where a quiet machine takes 2.7 s): by
+// default the limits only catch a hang (10 s, 60 s).
+// MATCHCAST_LOCAL_FIRST_MS=1000 MATCHCAST_LOCAL_ALL_MS=5000 holds a quiet
+// machine to the targets (tests/wasm/wasm_bench.mjs measures the module
+// alone).
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
@@ -24,8 +28,8 @@ if (!existsSync(path.join(WEB_DIR, 'wasm', 'matchcast-log.wasm'))) {
   console.log('SKIPPED: web/wasm/ not built (scripts/build-wasm.sh)');
   process.exit(77);
 }
-const FIRST_MS = Number(process.env.MATCHCAST_LOCAL_FIRST_MS ?? 1000);
-const ALL_MS = Number(process.env.MATCHCAST_LOCAL_ALL_MS ?? 5000);
+const FIRST_MS = Number(process.env.MATCHCAST_LOCAL_FIRST_MS ?? 10000);
+const ALL_MS = Number(process.env.MATCHCAST_LOCAL_ALL_MS ?? 60000);
 const GEN = path.join(REPO, 'tests', 'data', 'rcg', 'generated');
 const V3 = path.join(GEN, 'gen19-v3-20261122025631-Alpha_0-vs-Beta_1.rcg.gz');
 const JSONLOG = path.join(GEN, 'gen19-json-20261122030023-Alpha_1-vs-Beta_1.rcg.gz');
@@ -116,7 +120,7 @@ describe('the page as a static site opens logs itself', { timeout: 600000 }, () 
     assert.equal(ws, 0);
   });
 
-  test('the bundled game: first picture within 1 s at the log\'s positions, all animated within 5 s', async () => {
+  test('the bundled game: first picture soon at the log\'s positions, all animated', async () => {
     await page.setInputFiles('#log-open input', RCG);
     const first = await waitFor(page, async () => {
       const l = await local(page);
