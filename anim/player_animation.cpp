@@ -108,6 +108,62 @@ float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards) {
   return outside + inside;
 }
 
+// A hand never sinks into its own side's thigh. A leg splayed sideways (a
+// quick turn, a lateral lunge) or swinging forward past a hand swinging
+// back would pass through it; instead the arm is lifted away from the body
+// (shoulder abduction) a few degrees at a time until the hand's box is 3 cm
+// clear of the thigh's, as a person moves the arm out of the way. The 3 cm
+// keep them apart in the clients' blend between two frames as well (1 cm
+// left 40 drawn frames of a game at 60 Hz with a hand inside, 3 cm 4).
+void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a) {
+  constexpr float kClearM = -0.03f;  // the hand's deepest point at least 3 cm outside the thigh
+  constexpr std::uint32_t kJoints = (1u << kPelvis) | (1u << kTorso) | (1u << kRUpperArm) | (1u << kRLowerArm) |
+                                    (1u << kRHand) | (1u << kLUpperArm) | (1u << kLLowerArm) | (1u << kLHand) |
+                                    (1u << kRThigh) | (1u << kLThigh);
+  std::array<glm::mat4, kHumanJointCount> m;
+  auto pose = [&] {
+    LocalToModelJob fk{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0.0f, 1.0f, 0.0f), m};
+    fk.joint_mask = kJoints;
+    return fk.Run();
+  };
+  if (!pose()) return;
+  auto half_diagonal = [](const Segment& sg) { return 0.5f * glm::length(glm::vec3(sg.size[0], sg.size[1], sg.size[2])); };
+  for (int side = 0; side < 2; ++side) {
+    const int hand = side == 0 ? kRHand : kLHand, thigh = side == 0 ? kRThigh : kLThigh;
+    const auto abduct = static_cast<std::size_t>((side == 0 ? dof::kRShoulder : dof::kLShoulder) + 1);
+    const float outward = side == 0 ? -1.0f : 1.0f;  // the shoulder's x dof away from the body
+    const Segment& hs = skel.joints[static_cast<std::size_t>(hand)].segment;
+    const Segment& ts = skel.joints[static_cast<std::size_t>(thigh)].segment;
+    const auto& lim = skel.joints[static_cast<std::size_t>(side == 0 ? kRUpperArm : kLUpperArm)].limits[1];
+    const glm::vec3 hc(hs.center[0], hs.center[1], hs.center[2]);
+    const glm::vec3 hh(0.5f * hs.size[0], 0.5f * hs.size[1], 0.5f * hs.size[2]);
+    const float hand_radius = half_diagonal(hs);
+    for (int it = 0; it < 6; ++it) {
+      if (it > 0 && !pose()) return;
+      const glm::mat4& th = m[static_cast<std::size_t>(thigh)];
+      const glm::mat4& hm = m[static_cast<std::size_t>(hand)];
+      // The hand's box in the thigh's space: its centre and half axes.
+      const glm::mat3 to_thigh = glm::transpose(glm::mat3(th));
+      const glm::vec3 c = to_thigh * (glm::vec3(hm * glm::vec4(hc, 1.0f)) - glm::vec3(th[3]));
+      // Most frames: the hand's centre is further from the thigh's box than
+      // its own half diagonal and the clearance.
+      if (box_distance(ts, c, nullptr) > hand_radius - kClearM) break;
+      const glm::mat3 axes = to_thigh * glm::mat3(hm);
+      const glm::vec3 ax = axes[0] * hh.x, ay = axes[1] * hh.y, az = axes[2] * hh.z;
+      float depth = -1.0f;  // the deepest sample point: > 0 inside, < 0 its distance outside
+      for (float sx : {-1.0f, 0.0f, 1.0f})
+        for (float sy : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f})
+          for (float sz : {-1.0f, 0.0f, 1.0f})
+            depth = std::max(depth, -box_distance(ts, c + sx * ax + sy * ay + sz * az, nullptr));
+      if (depth <= kClearM) break;
+      // The hand is ~0.6 m from the shoulder: the angle that moves it
+      // `depth` out.
+      const float step = std::max(0.5f, (depth - kClearM) / 0.6f * 57.2958f);
+      a[abduct] = std::clamp(a[abduct] + outward * step, lim[0], lim[1]);
+    }
+  }
+}
+
 // Moves kicking foot `k` so that its box lies kContactGap off the ball:
 // up to three corrections of the ankle target along the contact normal,
 // each solved again by LegPoseJob. `body` places the ball; `a` holds the pose.
@@ -489,6 +545,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     for (int i = 0; i < 2; ++i) legs.feet[i] = feet[i];
     touch_ball(limits_from, body, pelvis_h, *act, act->kick_foot, legs, a);
   }
+  if (act == nullptr || !act->whole_body) keep_hands_off_thighs(limits_from, a);
   // Joint speed limit (not across a teleport). Where it holds a planted leg
   // back, that foot lets go of the grass next frame rather than slide.
   bool limited[kHumanJointCount] = {};
