@@ -64,6 +64,9 @@ class FrameEncoder {
   detail::CodecModel model_;
   // Estimated bits of each dof's residuals with each (partner, coefficient),
   // [dof][partner][coef], and without a partner: for choose_partners().
+  // partner_cost_ (128 KB) stays empty until the first delta is learnt
+  // from: an encoder that sends keyframes only (a replay paused or seeking)
+  // never needs it, and every replay spectator has an encoder of its own.
   std::vector<std::uint32_t> partner_cost_;
   std::vector<std::uint64_t> base_cost_;
   bool started_ = false;
@@ -92,6 +95,11 @@ class FrameDecoder {
 
   // True once a keyframe was decoded and no gap or error happened since.
   bool synced() const { return model_.history > 0; }
+  // Forgets the stream, as a new decoder would: the next frame accepted is
+  // a keyframe, which resets every part of the model a delta reads (the
+  // state any refused frame leaves). Cheaper than a new decoder (its models
+  // are tens of KB), e.g. for a recording reader's every seek.
+  void reset() { model_.history = 0; }
   const Quantizer& quantizer() const { return quant_; }
 
  private:

@@ -54,6 +54,7 @@ std::uint32_t cost_bits(std::int64_t r) {
 void FrameEncoder::learn_partners() {
   const int dofs = quant_.dof_count();
   const auto n = static_cast<std::size_t>(kMaxDof);
+  if (partner_cost_.empty()) partner_cost_.assign(n * n * 8, 0);
   // Each dof's eight predictions of the others, computed once per player.
   std::array<std::array<std::int64_t, 8>, kMaxDof> terms;
   for (std::size_t i = 0; i < kMaxPlayers; ++i) {
@@ -81,12 +82,17 @@ void FrameEncoder::learn_partners() {
 }
 
 void FrameEncoder::choose_partners() {
+  // Nothing learnt yet: every cost is 0, so no partner saves anything and
+  // the table is the empty one (what choose_partners() gives for zeros).
+  if (partner_cost_.empty()) {
+    model_.partners = detail::PartnerTable{};
+    return;
+  }
   model_.partners = detail::choose_partners(base_cost_, partner_cost_, quant_.dof_count());
 }
 
 FrameEncoder::FrameEncoder(const SkeletonDef& skeleton, EncoderOptions options)
-    : quant_(skeleton), options_(options),
-      partner_cost_(static_cast<std::size_t>(kMaxDof) * kMaxDof * 8, 0), base_cost_(kMaxDof, 0) {
+    : quant_(skeleton), options_(options), base_cost_(kMaxDof, 0) {
   if (options_.keyframe_interval < 1) options_.keyframe_interval = 1;
 }
 

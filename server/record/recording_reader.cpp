@@ -12,6 +12,15 @@ namespace mc::record {
 
 namespace rec = proto::rec;
 
+namespace {
+const std::shared_ptr<const RecordingHello>& no_hello() {
+  static const auto empty = std::make_shared<const RecordingHello>();
+  return empty;
+}
+}  // namespace
+
+RecordingReader::RecordingReader() : hello_(no_hello()) {}
+
 RecordingReader::~RecordingReader() {
   if (fd_ >= 0) ::close(fd_);
 }
@@ -43,9 +52,11 @@ bool RecordingReader::read_at(std::uint64_t offset, std::size_t size, std::strin
   return true;
 }
 
-bool RecordingReader::open(const std::string& path, std::string& error) {
+bool RecordingReader::open(const std::string& path, std::string& error,
+                           std::shared_ptr<const RecordingHello> known) {
   if (fd_ >= 0) ::close(fd_);
-  hello_json_.clear();
+  fd_ = -1;
+  hello_ = no_hello();
   stream_.reset();  // it holds a reference to the decoder
   decoder_.reset();
   chunks_.clear();
@@ -86,11 +97,23 @@ bool RecordingReader::open(const std::string& path, std::string& error) {
     error = path + ": no valid hello record" + (error.empty() ? "" : " (" + error + ")");
     return false;
   }
-  if (!rec::parse_hello(view.payload, hello_json_, error, major_) || !proto::hello_from_json(hello_json_, hello_, error)) {
+  std::string hello_json;
+  if (!rec::parse_hello(view.payload, hello_json, error, major_)) {
     error = path + ": " + error;
     return false;
   }
-  decoder_.emplace(hello_.skeleton);
+  if (known && known->json == hello_json) {
+    hello_ = std::move(known);
+  } else {
+    auto parsed = std::make_shared<RecordingHello>();
+    parsed->json = std::move(hello_json);
+    if (!proto::hello_from_json(parsed->json, parsed->hello, error)) {
+      error = path + ": " + error;
+      return false;
+    }
+    hello_ = std::move(parsed);
+  }
+  decoder_.emplace(hello_->hello.skeleton);
   data_start_ = rec::kFileHeaderSize + hello_size;
 
   if (!load_index(file_size)) {
@@ -230,7 +253,7 @@ bool RecordingReader::next(PoseFrame& out, std::string& error, std::vector<std::
       // The rest of this chunk's stream cannot be found: skip it, and wait
       // for a keyframe, as a live client would.
       stream_.reset();
-      *decoder_ = proto::FrameDecoder(hello_.skeleton);
+      decoder_->reset();
       ++skipped_frames_;
       error.clear();
       continue;
@@ -248,7 +271,7 @@ bool RecordingReader::seek(int time, PoseFrame& out, std::string& error, int sto
     error = path_ + ": the recording holds no frames";
     return false;
   }
-  *decoder_ = proto::FrameDecoder(hello_.skeleton);
+  decoder_->reset();
   if (!load_chunk(rec::find_chunk(chunks_, time, stoppage), error)) return false;
   while (next(out, error)) {
     if (out.time > time || (out.time == time && out.stoppage >= stoppage)) return true;

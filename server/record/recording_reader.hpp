@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,9 +20,18 @@
 
 namespace mc::record {
 
+// A recording's hello as open() found it: the JSON text of its hello record
+// and what that text says. Immutable, so readers of one file (the relay
+// opens one for every spectator's replay) can share it: the hello is a few
+// KB of JSON and parsing it was nearly all of open()'s time.
+struct RecordingHello {
+  std::string json;
+  proto::Hello hello;
+};
+
 class RecordingReader {
  public:
-  RecordingReader() = default;
+  RecordingReader();
   ~RecordingReader();
   RecordingReader(const RecordingReader&) = delete;
   RecordingReader& operator=(const RecordingReader&) = delete;
@@ -29,10 +39,16 @@ class RecordingReader {
   // False + error when the file cannot be read, is not a recording, has an
   // unknown major version, or lacks a valid hello. A missing or damaged
   // index is not an error: see recovered().
-  bool open(const std::string& path, std::string& error);
+  // `known`: a hello parsed before (shared_hello() of another reader of the
+  // same file). When the file's hello text is byte for byte known->json it
+  // is taken as it is instead of being parsed again; any other text (a
+  // different or changed file) is parsed as usual.
+  bool open(const std::string& path, std::string& error, std::shared_ptr<const RecordingHello> known = nullptr);
 
-  const proto::Hello& hello() const { return hello_; }
-  const std::string& hello_json() const { return hello_json_; }
+  const proto::Hello& hello() const { return hello_->hello; }
+  const std::string& hello_json() const { return hello_->json; }
+  // The hello of the open file, to give to open() of another reader.
+  const std::shared_ptr<const RecordingHello>& shared_hello() const { return hello_; }
   const std::vector<proto::rec::ChunkInfo>& chunks() const { return chunks_; }
   std::uint64_t frame_count() const;
   // True when the index was rebuilt by scanning (the file was not closed).
@@ -75,8 +91,7 @@ class RecordingReader {
 
   int fd_ = -1;
   std::string path_;
-  std::string hello_json_;
-  proto::Hello hello_;
+  std::shared_ptr<const RecordingHello> hello_;  // never null: an empty one before open()
   std::optional<proto::FrameDecoder> decoder_;
   std::vector<proto::rec::ChunkInfo> chunks_;
   bool recovered_ = false;

@@ -36,8 +36,14 @@ std::shared_ptr<relay::ReplaySource> ReplayCatalog::open(const std::string& name
     return nullptr;
   }
   const std::string path = (fs::path(dir_) / name).string();
+  std::shared_ptr<const record::RecordingHello> hello;
+  {
+    std::lock_guard lock(mutex_);
+    auto it = summaries_.find(name);
+    if (it != summaries_.end()) hello = it->second.hello;
+  }
   auto reader = std::make_unique<record::RecordingReader>();
-  if (!reader->open(path, error)) return nullptr;
+  if (!reader->open(path, error, std::move(hello))) return nullptr;
   std::error_code ec;
   const auto size = fs::file_size(path, ec);
   RecordingSummary summary;
@@ -49,7 +55,7 @@ std::shared_ptr<relay::ReplaySource> ReplayCatalog::open(const std::string& name
   if (summary.last_time == 0 && summary.goals.empty()) {
     if (!summarize(*reader, summary, error)) return nullptr;
     std::lock_guard lock(mutex_);
-    summaries_[name] = Cached{size, summary};
+    summaries_[name] = Cached{size, summary, reader->shared_hello()};
   }
   auto player = std::make_shared<ReplayPlayer>(executor, name, std::move(reader), std::move(summary));
   player->start();
@@ -71,6 +77,7 @@ std::shared_ptr<relay::ReplaySource> ReplayCatalog::open_timeshift(const std::st
                                                                    std::string& error) {
   std::string name;
   RecordingSummary summary;
+  std::shared_ptr<const record::RecordingHello> hello;
   {
     std::lock_guard lock(mutex_);
     auto it = live_.find(channel);
@@ -97,9 +104,10 @@ std::shared_ptr<relay::ReplaySource> ReplayCatalog::open_timeshift(const std::st
     }
     name = live.name;
     summary = live.summary;
+    hello = live.reader->shared_hello();
   }
   auto reader = std::make_unique<record::RecordingReader>();
-  if (!reader->open((fs::path(dir_) / name).string(), error)) return unreadable(channel, error);
+  if (!reader->open((fs::path(dir_) / name).string(), error, std::move(hello))) return unreadable(channel, error);
   auto player = std::make_shared<ReplayPlayer>(executor, name, std::move(reader), std::move(summary),
                                                /*follow=*/true);
   player->start();

@@ -47,6 +47,9 @@ class ReplayCatalog : public relay::ReplayFactory {
   struct Cached {
     std::uint64_t size = 0;
     RecordingSummary summary;
+    // The file's parsed hello, so that the next replay of it does not parse
+    // it again (the reader checks that the file's hello text is the same).
+    std::shared_ptr<const record::RecordingHello> hello;
   };
   // A live recording's summary, kept up to date by reading only what was
   // appended since the last time shift opened (the first one reads it all).

@@ -62,7 +62,11 @@ ReplayPlayer::ReplayPlayer(boost::asio::any_io_executor executor, std::string na
       encoder_(reader_->hello().skeleton),
       follow_(follow) {
   // A recording made before match_ids were public may name a server path.
-  channel_->set_hello(proto::hello_without_paths(reader_->hello_json()));
+  // The reader parsed the hello already: only a match_id with a path needs
+  // the text parsed and written again (hello_without_paths returns any
+  // other text unchanged), which was most of a replay's start.
+  const bool has_path = reader_->hello().match_id.find_first_of("/\\") != std::string::npos;
+  channel_->set_hello(has_path ? proto::hello_without_paths(reader_->hello_json()) : reader_->hello_json());
   channel_->set_feed_state(relay::FeedState::Live);
 }
 
