@@ -34,6 +34,11 @@ struct Worker {
   std::deque<Entry> clients;  // oldest first
   std::array<ClientStats, 3> stats;
   std::uint64_t joins = 0, leaves = 0;
+  // Set by Population::stop_all(): the clients open just before (the final
+  // report's "open").
+  bool stopped = false;
+  unsigned open_at_stop[3] = {0, 0, 0};
+  unsigned burst_open_at_stop = 0;
   std::thread thread;
 };
 
@@ -138,6 +143,30 @@ class Population {
     }
   }
 
+  // Ends every client, on its worker, and waits: one still upgrading at the
+  // end counts as abandoned before the final report, not after it (the
+  // relay may finish its upgrade and count it; /metrics is compared with
+  // this report).
+  void stop_all() {
+    std::vector<std::future<void>> done;
+    for (auto& w : workers_) {
+      auto p = std::make_shared<std::promise<void>>();
+      done.push_back(p->get_future());
+      net::post(w->ioc, [w = w.get(), p] {
+        for (auto& e : w->clients) {
+          if (e.client->open()) {
+            if (e.burst) ++w->burst_open_at_stop;
+            else ++w->open_at_stop[static_cast<int>(e.behaviour)];
+          }
+          e.client->stop();
+        }
+        w->stopped = true;
+        p->set_value();
+      });
+    }
+    for (auto& f : done) f.get();
+  }
+
   // Counters of every worker, merged, and how many clients are open.
   void report(double t, bool final) {
     struct Snapshot {
@@ -153,6 +182,10 @@ class Population {
       net::post(w->ioc, [w = w.get(), p] {
         Snapshot s;
         s.stats = w->stats;
+        if (w->stopped) {
+          for (int b = 0; b < 3; ++b) s.open[b] = w->open_at_stop[b];
+          s.burst_open = w->burst_open_at_stop;
+        }
         for (const auto& e : w->clients) {
           if (!e.client->open()) continue;
           if (e.burst) ++s.burst_open;
@@ -227,6 +260,7 @@ int run_soak(const SoakOptions& o, const proto::Hello& hello) {
       next_report += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.report_every_s));
     }
   }
+  population.stop_all();
   population.report(std::chrono::duration<double>(Clock::now() - start).count(), true);
   return 0;
 }
