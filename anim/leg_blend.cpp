@@ -115,7 +115,7 @@ void LegBlend::apply(const PoseFrame& a, const PoseFrame& b, float t, PoseFrame&
     const PlayerPose& pa = a.players[i];
     const PlayerPose& pb = b.players[i];
     if (pa.side == Side::Neutral || pb.side != pa.side || pb.unum != pa.unum) continue;
-    if (std::hypot(pb.x - pa.x, pb.y - pa.y) >= teleport_m) continue;
+    if (pm::hypot(pb.x - pa.x, pb.y - pa.y) >= teleport_m) continue;
     apply(pa, pb, t, out.players[i]);
   }
 }
