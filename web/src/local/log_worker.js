@@ -1,9 +1,10 @@
 // The Web Worker that turns a log into the broadcast, off the page's main
 // thread: it streams the file (or URL), gunzips it with the browser's
-// DecompressionStream (inflate.js: nothing before a cut is lost), and feeds the bytes to the WebAssembly module
-// (wasm/log_module.cpp: the server's ingest readers, anim/ and the proto
-// encoder), a few megabytes ahead of the reader. What the module makes goes
-// to the page as it is made, so the game plays while the rest is animated.
+// DecompressionStream (inflate.js: nothing before a cut is lost), and feeds
+// the bytes to the WebAssembly module (wasm/log_module.cpp: the server's
+// ingest readers, anim/ and the proto encoder), a few megabytes ahead of
+// the reader. What the module makes goes to the page as it is made, so the
+// game plays while the rest is animated.
 //
 // Protocol (web/README.md, "Opening a log"):
 //   page -> worker  { type: 'open', file | url, name, options: { keyframeInterval, lookahead, detail, baseMs } }
