@@ -247,7 +247,7 @@ std::string who(const PoseFrame& f, int k, int m, const PlayerPose& p, const cha
 }  // namespace
 
 CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldState>& states,
-                               const std::vector<PoseFrame>& produced, int draws_per_frame, int leg_blend) {
+                               const std::vector<PoseFrame>& produced, int draws_per_frame, DrawnLegs drawn_legs) {
   CloseUpReport r;
   const int m = std::max(1, draws_per_frame);
   r.draws_per_frame = m;
@@ -289,7 +289,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
   if (const char* t = std::getenv("MATCHCAST_CLOSEUP_TRACE"))
     if (std::sscanf(t, "%d %u %u", &trace_slot, &trace_from, &trace_to) != 3) trace_slot = -1;
   PoseFrame drawn;
-  const LegBlend legs(skel, leg_blend == 2);
+  const LegBlend legs(skel, drawn_legs == DrawnLegs::ContactsReaimed);
   // MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the drawn grounded pairs by whether
   // the foot is on the grass in the 20 Hz frames around them (stderr).
   const bool breakdown = m > 1 && std::getenv("MATCHCAST_CLOSEUP_BREAKDOWN");
@@ -311,7 +311,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
       const PoseFrame* fp = &frames[i];
       if (k > 0) {
         blend_like_clients(frames[i], frames[i + 1], static_cast<float>(k) / static_cast<float>(m), dofs, drawn,
-                           leg_blend > 0 ? &legs : nullptr);
+                           drawn_legs != DrawnLegs::AngleBlend ? &legs : nullptr);
         fp = &drawn;
       }
       const PoseFrame& f = *fp;

@@ -129,13 +129,14 @@ struct CloseUpReport {
 // Measures `view` at `draws_per_frame` drawn frames per 20 Hz frame (1 or
 // more). `states`: the log's 10 Hz states (root error at cycles, by
 // seq / 2); `produced`: the animator's frames before encoding (joint limits).
-// Drawn frames between two 20 Hz ones are blended as the clients do (joint
-// angles linearly); `leg_blend` 1 also re-aims the legs whose foot stands
-// on the grass in both frames (anim/leg_blend.hpp), 2 also those of a foot
-// leaving or landing, which the clients do not do yet: a study of what it
-// would give.
+// How drawn frames between two 20 Hz ones are blended: as the clients do
+// (joint angles linearly), or, a study of what it would give, with the legs
+// re-aimed (anim/leg_blend.hpp): those whose foot stands on the grass in
+// both frames, or also those of a foot leaving or landing.
+enum class DrawnLegs { AngleBlend, PlantedReaimed, ContactsReaimed };
 CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldState>& states,
-                               const std::vector<PoseFrame>& produced, int draws_per_frame, int leg_blend = 0);
+                               const std::vector<PoseFrame>& produced, int draws_per_frame,
+                               DrawnLegs legs = DrawnLegs::AngleBlend);
 
 // The report as a table: one column per report (20 Hz, then the drawing rate).
 std::string format_close_up(const std::vector<const CloseUpReport*>& reports);

@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> logs;
   std::string mode = "keyframe", mocap_dir = MATCHCAST_DEFAULT_MOCAP_DIR, mocap_cache = MATCHCAST_DEFAULT_MOCAP_CACHE;
   bool compare = false;
-  int leg_blend = 0;
+  DrawnLegs drawn_legs = DrawnLegs::AngleBlend;
   int draw_rate = 60;
   std::string sheet = "test-output/anim/contact-sheet.png";
   for (int i = 1; i < argc; ++i) {
@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
       mode = argv[++i];
     else if (arg == "--compare") compare = true;
     else if (arg == "--leg-blend" && i + 1 < argc && (std::string(argv[i + 1]) == "planted" || std::string(argv[i + 1]) == "contacts"))
-      leg_blend = std::string(argv[++i]) == "planted" ? 1 : 2;
+      drawn_legs = std::string(argv[++i]) == "planted" ? DrawnLegs::PlantedReaimed : DrawnLegs::ContactsReaimed;
     else if (arg == "--mocap-dir" && i + 1 < argc) mocap_dir = argv[++i];
     else if (arg == "--mocap-cache" && i + 1 < argc) mocap_cache = argv[++i];
     else if (arg == "--detail" && i + 1 < argc) {
@@ -226,7 +226,7 @@ int main(int argc, char** argv) {
         sheet.clear();  // the first log's
       }
       const CloseUpReport r20 = measure_close_up(view, x.states, x.frames, 1);
-      const CloseUpReport rd = measure_close_up(view, x.states, x.frames, draw_rate / 20, leg_blend);
+      const CloseUpReport rd = measure_close_up(view, x.states, x.frames, draw_rate / 20, drawn_legs);
       std::printf("== %s%s (%zu frames, %zu kicks, %.0f B/frame on the wire)\n%s", log.c_str(), label, view.frames.size(),
                   view.kicks.size(), static_cast<double>(view.encoded_bytes) / static_cast<double>(std::max<std::size_t>(1, view.frames.size())),
                   format_close_up({&r20, &rd}).c_str());
