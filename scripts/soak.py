@@ -119,6 +119,7 @@ def main():
     ap.add_argument('--burst-every', type=float, default=300)
     ap.add_argument('--burst-stay', type=float, default=60)
     ap.add_argument('--warmup', type=float, default=None, help='seconds before RSS/fd must be flat')
+    ap.add_argument('--server', default=None, help='another matchcast-server binary, to compare two builds side by side')
     a = ap.parse_args()
     duration = a.minutes * 60
     warmup = a.warmup if a.warmup is not None else min(300, duration / 3)
@@ -126,6 +127,8 @@ def main():
         'server': 'server/app/matchcast-server', 'feeder': 'server/tools/feeder/matchcast-feeder',
         'loadgen': 'server/tools/loadgen/matchcast-loadgen',
         'check': 'server/tools/recording_check/matchcast-recording-check'}.items()}
+    if a.server:
+        bins['server'] = a.server
     for n, p in bins.items():
         if not os.access(p, os.X_OK):
             sys.exit(f'soak: {p} is missing (scripts/soak.sh builds it)')

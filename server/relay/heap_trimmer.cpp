@@ -15,6 +15,16 @@ std::uint64_t HeapTrimmer::churn(const RelayStats& stats) {
   return opened + closed;
 }
 
+bool HeapTrimmer::set_allocator_policy() {
+#if defined(__GLIBC__)
+  // Once per process; later calls (more relays in one test) change nothing.
+  static const bool done = ::mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1;
+  return done;
+#else
+  return false;
+#endif
+}
+
 bool HeapTrimmer::trim() {
 #if defined(__GLIBC__)
   ::malloc_trim(0);

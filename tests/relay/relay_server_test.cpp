@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <boost/asio/connect.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/http.hpp>
@@ -376,6 +380,25 @@ TEST_F(RelayServerTest, TheHeapIsTrimmedWithinSecondsOfConnectionsComingAndGoing
   std::this_thread::sleep_for(std::chrono::milliseconds(2200));
   EXPECT_EQ(server_->stats().heap_trims.load(), settled);
 }
+
+#if defined(__GLIBC__)
+// After a relay started, a mid-sized block (a frame encoder's 128 KB partner
+// table, say) is mapped on its own even after a larger one was freed. With
+// glibc's moving threshold the large free raises the threshold, and the
+// next such block comes from the heap, where its pages outlive it.
+TEST_F(RelayServerTest, MidSizedBlocksAreMappedOnTheirOwnAfterALargeOneWasFreed) {
+  start();
+  auto* large = static_cast<char*>(std::malloc(4 << 20));
+  large[0] = 1;
+  std::free(large);  // glibc's default would now put blocks under 4 MB in the heap
+  const auto mapped_before = ::mallinfo2().hblks;
+  auto* mid = static_cast<char*>(std::malloc(100 * 1024));
+  mid[0] = 1;
+  EXPECT_EQ(::mallinfo2().hblks, mapped_before + 1) << "a 100 KB block came from the heap";
+  std::free(mid);
+  EXPECT_EQ(::mallinfo2().hblks, mapped_before);
+}
+#endif
 
 TEST_F(RelayServerTest, PerAddressLimitRefusesTheExtraConnection) {
   config_.max_connections_per_ip = 2;
