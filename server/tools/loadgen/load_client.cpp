@@ -68,6 +68,9 @@ void LoadClient::stop() {
 }
 
 void LoadClient::note_failure(const char* step, beast::error_code ec) {
+  // A client stopped mid-connect or mid-upgrade (the end of a run) was
+  // counted as abandoned by stop(); its cancelled operation is no failure.
+  if (ended_) return;
   ended_ = true;
   ++stats_.failed;
   if (stats_.first_error.empty()) stats_.first_error = std::string(step) + ": " + ec.message();
