@@ -249,8 +249,13 @@ int run_soak(const SoakOptions& o, const proto::Hello& hello) {
     std::this_thread::sleep_until(std::min({next_tick, next_report, end}));
     const auto now = Clock::now();
     if (now >= next_tick) {
-      const bool burst = now >= next_burst;
-      if (burst)
+      // A burst whose stay would outlast the run is not started: it would
+      // only be stopped mid-upgrade by the end (hundreds of clients counted
+      // as abandoned, which blurs the /metrics check).
+      const auto stay = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.burst_stay_s));
+      const bool due = now >= next_burst;
+      const bool burst = due && end - now > stay;
+      if (due)
         next_burst += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.burst_every_s));
       population.tick(burst);
       next_tick += std::chrono::seconds(1);
