@@ -111,12 +111,13 @@ float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards) {
 // A hand never sinks into its own side's thigh. A leg splayed sideways (a
 // quick turn, a lateral lunge) or swinging forward past a hand swinging
 // back would pass through it; instead the arm is lifted away from the body
-// (shoulder abduction) a few degrees at a time until the hand's box is 3 cm
-// clear of the thigh's, as a person moves the arm out of the way. The 3 cm
-// keep them apart in the clients' blend between two frames as well (1 cm
-// left 40 drawn frames of a game at 60 Hz with a hand inside, 3 cm 4).
+// (shoulder abduction) a few degrees at a time until the hand's box is 6 cm
+// clear of the thigh's, as a person moves the arm out of the way. The 6 cm
+// keep them apart in the clients' blend between two frames as well: of the
+// two full games' frames drawn at 60 Hz, 1 cm left 40 and 40 with a hand
+// more than 2 cm inside, 3 cm 10 and 4, 5 cm 0 and 1, 6 cm none.
 void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a) {
-  constexpr float kClearM = -0.03f;  // the hand's deepest point at least 3 cm outside the thigh
+  constexpr float kClearM = -0.06f;  // the hand's deepest point at least 6 cm outside the thigh
   constexpr std::uint32_t kJoints = (1u << kPelvis) | (1u << kTorso) | (1u << kRUpperArm) | (1u << kRLowerArm) |
                                     (1u << kRHand) | (1u << kLUpperArm) | (1u << kLLowerArm) | (1u << kLHand) |
                                     (1u << kRThigh) | (1u << kLThigh);
