@@ -158,7 +158,7 @@ class NatsClusterFailover : public ::testing::Test {
       n.monitor = free_port();
     }
     for (int i = 0; i < 3; ++i) ASSERT_TRUE(start_node(i));
-    for (int i = 0; i < 3; ++i) ASSERT_TRUE(healthy(i, 30s)) << "node " << i + 1 << " did not join the cluster";
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(healthy(i, 30s)) << "node " << i + 1 << " did not join the cluster" << why(i);
   }
   void TearDown() override {
     for (auto* p : {&edge_a_, &edge_b_, &origin_}) p->stop();
@@ -195,6 +195,15 @@ class NatsClusterFailover : public ::testing::Test {
                  http_get(nodes_[i].monitor, "/healthz").find("ok") != std::string::npos;
         },
         timeout);
+  }
+  // What a node that stays unhealthy says: alive or not, its monitor's
+  // answers, the end of its log.
+  std::string why(int i) {
+    const std::string log = read_file(dir_ / ("nats-" + std::to_string(i + 1) + ".log"));
+    return std::string("\n  process ") + (nodes_[i].proc.running() ? "running" : "gone") + ", ports client " +
+           std::to_string(nodes_[i].client) + " cluster " + std::to_string(nodes_[i].cluster) + " monitor " +
+           std::to_string(nodes_[i].monitor) + "\n  /healthz: " + http_get(nodes_[i].monitor, "/healthz") +
+           "\n  log tail:\n" + log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
   }
   // The node (0-based) a process's NATS connection is on, or -1.
   int node_of(const ChildProcess& p) {
@@ -303,7 +312,7 @@ TEST_F(NatsClusterFailover, EdgesAndTheOriginRideOutTheLossOfANode) {
   std::printf("[outage] A: a spectator joining edge A %s its 'back'\n",
               first_text(*a_joiner, "\"status\":\"back\"") ? "before" : "after");
   ASSERT_TRUE(start_node(1));
-  ASSERT_TRUE(healthy(1, 40s)) << "node 2 did not come back";
+  ASSERT_TRUE(healthy(1, 40s)) << "node 2 did not come back" << why(1);
 
   // B. The origin's node dies.
   std::this_thread::sleep_for(2s);
@@ -317,7 +326,7 @@ TEST_F(NatsClusterFailover, EdgesAndTheOriginRideOutTheLossOfANode) {
   report("B: the origin's node killed", "edge A spectator", b_a1);
   report("B: the origin's node killed", "edge B spectator", b_b1);
   ASSERT_TRUE(start_node(0));
-  ASSERT_TRUE(healthy(0, 40s)) << "node 1 did not come back";
+  ASSERT_TRUE(healthy(0, 40s)) << "node 1 did not come back" << why(0);
 
   // C. Node 3 hangs; both edges are on it.
   std::this_thread::sleep_for(2s);

@@ -9,7 +9,9 @@
 #include <boost/beast/http.hpp>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -25,10 +27,35 @@ inline std::string find_nats_server() {
   return {};
 }
 
-// A port that was free on 127.0.0.1 a moment ago.
+// A port that was free on 127.0.0.1 a moment ago, taken from below the
+// kernel's ephemeral range. Why: a port from bind(0) is an ephemeral one,
+// and until the child process binds it, any outgoing connection on the
+// machine (another test's clients, a reconnecting edge, nats-server's own
+// routes) may take it as its local port; the child then fails with
+// EADDRINUSE. CI saw exactly that as "node 1 did not join the cluster".
+// Below the range only a listener can take it, and the bind check sees one.
 inline std::uint16_t free_port() {
+  static std::mt19937 rng(static_cast<unsigned>(::getpid()) ^
+                          static_cast<unsigned>(std::chrono::steady_clock::now().time_since_epoch().count()));
+  int low = 32768;
+  if (std::FILE* f = std::fopen("/proc/sys/net/ipv4/ip_local_port_range", "r")) {
+    if (std::fscanf(f, "%d", &low) != 1) low = 32768;
+    std::fclose(f);
+  }
   boost::asio::io_context io;
-  boost::asio::ip::tcp::acceptor a(io, {boost::asio::ip::make_address("127.0.0.1"), 0});
+  const auto loopback = boost::asio::ip::make_address("127.0.0.1");
+  if (low > 12000) {
+    std::uniform_int_distribution<int> pick(10000, low - 1);
+    for (int attempt = 0; attempt < 200; ++attempt) {
+      const auto port = static_cast<std::uint16_t>(pick(rng));
+      boost::asio::ip::tcp::acceptor a(io);
+      boost::system::error_code ec;
+      a.open(boost::asio::ip::tcp::v4(), ec);
+      if (!ec) a.bind({loopback, port}, ec);
+      if (!ec) return port;
+    }
+  }
+  boost::asio::ip::tcp::acceptor a(io, {loopback, 0});  // no room below the range: the old way
   return a.local_endpoint().port();
 }
 
