@@ -17,8 +17,10 @@ float lerpf(double a, double b, float t) { return static_cast<float>(a + (b - a)
 }  // namespace
 
 Animator::Animator(const SkeletonDef& skeleton, const GameParams& params, AnimConfig config)
-    : skeleton_(skeleton), params_(params), config_(config),
-      players_(std::make_unique<std::array<PlayerAnim, kMaxPlayers>>()) {
+    : skeleton_(skeleton), params_(params),
+      k_{params.simulator_step_ms(), params.ball_size(), params.server.number("tackle_cycles", 10),
+         params.server.number("stamina_max", 8000)},
+      config_(config), players_(std::make_unique<std::array<PlayerAnim, kMaxPlayers>>()) {
   config_.lookahead_cycles = std::clamp(config_.lookahead_cycles, 1, 50);
   config_.heading_half_window = std::clamp(config_.heading_half_window, 0, 10);
   // Past cycles needed: heading window, and the raw decision of the previous
@@ -137,7 +139,7 @@ void Animator::emit_events(std::uint64_t pos, std::vector<AnimEvent>& events) co
 void Animator::plan_actions(std::uint64_t pos, int slot) {
   const auto i = static_cast<std::size_t>(slot);
   PlayerAnim& ctx = (*players_)[i];
-  const double step_s = 0.001 * params_.simulator_step_ms();
+  const double step_s = 0.001 * k_.step_ms;
   const float prepare_s = static_cast<float>(config_.lookahead_cycles * step_s - 0.5 * step_s);
   const std::uint64_t last = std::min(pos + static_cast<std::uint64_t>(config_.lookahead_cycles), pushed_ - 1);
   for (std::uint64_t k = pos + 1; k <= last; ++k) {
@@ -151,7 +153,7 @@ void Animator::plan_actions(std::uint64_t pos, int slot) {
       ctx.last_action_pos = k + 1;
       // The bits say kick; the geometry must agree (some feeds lose the
       // fault bit): the ball was within the player's kickable distance.
-      const double reach = params_.type(q.type).kickable_distance(params_.ball_size()) + 0.25;
+      const double reach = params_.type(q.type).kickable_distance(k_.ball_size) + 0.25;
       if (pm::hypot(sp.ball.x - q.x, sp.ball.y - q.y) > reach) continue;
       const double contact = (static_cast<double>(k) - 0.5) * step_s;
       if (ctx.motion_active && merge_kick(ctx.motion, contact, k)) continue;
@@ -173,7 +175,7 @@ void Animator::plan_actions(std::uint64_t pos, int slot) {
       in.ball_y = static_cast<float>(sp.ball.y);
       in.after_x = static_cast<float>(sk.ball.x);
       in.after_y = static_cast<float>(sk.ball.y);
-      in.ball_radius = static_cast<float>(params_.ball_size());
+      in.ball_radius = static_cast<float>(k_.ball_size);
       in.contact_time_s = contact;
       in.prepare_s = prepare_s;
       in.speed = static_cast<float>(pm::hypot(p.x - q.x, p.y - q.y) / step_s);
@@ -211,7 +213,7 @@ void Animator::plan_actions(std::uint64_t pos, int slot) {
     m.foot = bz >= 0 ? Foot::Right : Foot::Left;
     m.ball_x = static_cast<float>(sk.ball.x);
     m.ball_y = static_cast<float>(sk.ball.y);
-    const float tackle_s = static_cast<float>(params_.server.number("tackle_cycles", 10) * step_s);
+    const float tackle_s = static_cast<float>(k_.tackle_cycles * step_s);
     m.follow_s = m.kind == MotionKind::Tackle ? tackle_s : 0.2f;
     m.end_s = m.kind == MotionKind::Tackle ? tackle_s + 0.3f : m.kind == MotionKind::Catch ? 0.5f : 0.9f;
     // A kick whose contact is still to come is not cut short: this action
@@ -232,8 +234,8 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
   const bool has_next = pos + 1 < pushed_;
   const WorldState& b = has_next ? state_at(pos + 1) : a;
   const std::uint64_t oldest = pushed_ > ring_.size() ? pushed_ - ring_.size() : 0;
-  const double stamina_max = params_.server.number("stamina_max", 8000);
-  const float ball_r = static_cast<float>(params_.ball_size());
+  const double stamina_max = k_.stamina_max;
+  const float ball_r = static_cast<float>(k_.ball_size);
   const DetailLevel detail = config_.detail;
   const bool loco_on = detail == DetailLevel::Run || detail == DetailLevel::Full;
   FootstepParams lp;
@@ -253,7 +255,7 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
   }
   if (events != nullptr) emit_events(pos, *events);
   const bool actions_on = detail == DetailLevel::Kick || detail == DetailLevel::Full;
-  const double step_s = 0.001 * params_.simulator_step_ms();
+  const double step_s = 0.001 * k_.step_ms;
   for (int i = 0; i < kMaxPlayers; ++i) plan_actions(pos, i);
 
   for (int sub = 0; sub < kFramesPerCycle; ++sub) {
@@ -309,7 +311,7 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       in.stamina = static_cast<float>(std::clamp(pa.stamina / stamina_max, 0.0, 1.0));
       in.reset = (sub == 0 && act[i] == Action::Teleport) || !pa.active() || !ctx.was_active;
       in.animate_locomotion = loco_on && pa.active();
-      in.dt = 0.001f * static_cast<float>(params_.simulator_step_ms()) / kFramesPerCycle;
+      in.dt = 0.001f * static_cast<float>(k_.step_ms) / kFramesPerCycle;
       // The action playing at this frame, if any.
       ActionSample sample;
       const double now = (static_cast<double>(pos) + 0.5 * sub) * step_s;

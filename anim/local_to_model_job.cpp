@@ -1,6 +1,9 @@
 #include "anim/local_to_model_job.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "anim/portable_math.hpp"
 
@@ -9,6 +12,31 @@ namespace {
 
 constexpr float kDegToRad = 0.017453292519943295f;
 
+// sin and cos of one joint angle (degrees), remembered. One frame of one
+// player poses the same angles many times over (the legs' solver, the
+// hands' clearance, the grass check, the speed limit all run forward
+// kinematics on them), and pm::sincos is most of a joint's rotation. A
+// small direct-mapped table per thread, keyed by the angle's bits: a hit
+// gives exactly what the computation would, so the frames do not change.
+// (Zeroed entries hold +0 degrees, whose sine and cosine are 0 and 1.)
+void sincos_deg(float deg, float& s, float& c) {
+  struct Entry {
+    std::uint32_t bits = 0;
+    float s = 0, c = 1;
+  };
+  constexpr unsigned kBits = 10;
+  thread_local std::array<Entry, 1u << kBits> table{};
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &deg, sizeof bits);
+  Entry& e = table[(bits * 2654435761u) >> (32 - kBits)];
+  if (e.bits != bits) {
+    e.bits = bits;
+    pm::sincos(deg * kDegToRad, e.s, e.c);
+  }
+  s = e.s;
+  c = e.c;
+}
+
 }  // namespace
 
 glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
@@ -16,9 +44,8 @@ glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
   // columns of r and keeps the third.
   glm::mat3 r(1.0f);
   for (std::size_t i = 0; i < dofs.size(); ++i) {
-    const float a = deg[i] * kDegToRad;
     float s = 0, c = 1;
-    pm::sincos(a, s, c);
+    sincos_deg(deg[i], s, c);
     int p = 0, q = 1;  // z: columns 0 and 1
     if (dofs[i] == 'x') { p = 1; q = 2; }
     else if (dofs[i] == 'y') { p = 2; q = 0; }

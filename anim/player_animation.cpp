@@ -148,9 +148,21 @@ void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a) {
       const glm::vec3 c = to_thigh * (glm::vec3(hm * glm::vec4(hc, 1.0f)) - glm::vec3(th[3]));
       // Most frames: the hand's centre is further from the thigh's box than
       // its own half diagonal and the clearance.
-      if (box_distance(ts, c, nullptr) > hand_radius - kClearM) break;
+      glm::vec3 n;
+      const float centre_out = box_distance(ts, c, &n);
+      if (centre_out > hand_radius - kClearM) break;
       const glm::mat3 axes = to_thigh * glm::mat3(hm);
       const glm::vec3 ax = axes[0] * hh.x, ay = axes[1] * hh.y, az = axes[2] * hh.z;
+      // Many more: the plane through the thigh box's point nearest the
+      // hand's centre, facing it, has the whole thigh box behind it (the
+      // box is convex); no point of the hand's box is nearer that plane
+      // than the centre's distance less the box's reach along its normal.
+      // When that is the clearance and a margin far above float rounding,
+      // every sample below is clear too and the loop would stop at once:
+      // the same pose, without its 45 distances (issue 23: the animation
+      // of a full game within 1 s).
+      const float reach = std::fabs(glm::dot(ax, n)) + std::fabs(glm::dot(ay, n)) + std::fabs(glm::dot(az, n));
+      if (centre_out - reach > -kClearM + 1e-4f) break;
       float depth = -1.0f;  // the deepest sample point: > 0 inside, < 0 its distance outside
       for (float sx : {-1.0f, 0.0f, 1.0f})
         for (float sy : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f})

@@ -129,6 +129,11 @@ inline void sincos(double x, double& s, double& c) {
     s = c = x - x;
     return;
   }
+  if (std::fabs(x) < 0.78539816339744828) {  // |x| < pi/4: reduce() would give r = x, quadrant 0
+    s = x == 0 ? x : detail::kernel_sin(x);
+    c = detail::kernel_cos(x);
+    return;
+  }
   int q = 0;
   const double r = detail::reduce(x, q);
   const double ks = detail::kernel_sin(r), kc = detail::kernel_cos(r);

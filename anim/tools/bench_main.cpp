@@ -2,19 +2,43 @@
 // and how many live games (20 frames/s each) one core could animate.
 // Reading the log is not timed: only Animator::push/finish are. Exits 1 when
 // a full game takes more than 1 s of CPU (issue 23); the quality figures'
-// own regressions are anim_quality_full_games_test's.
+// own regressions are anim_quality_full_games_test's. It also prints a
+// digest of every frame's positions and angles (FNV-1a over their bits): a
+// change made only for speed must leave it as it was.
 //
 //   matchcast-anim-bench [--repeat N] LOG...
 #include <chrono>
 #include <ctime>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
 #include "anim/animator.hpp"
 #include "anim/human_skeleton.hpp"
 #include "server/ingest/state_source.hpp"
+
+namespace {
+
+// FNV-1a 64 over the bits of what the animation computes.
+std::uint64_t digest(const std::vector<mc::PoseFrame>& frames) {
+  std::uint64_t h = 14695981039346656037ull;
+  auto mix = [&h](float v) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    for (int i = 0; i < 4; ++i) h = (h ^ ((bits >> (8 * i)) & 0xffu)) * 1099511628211ull;
+  };
+  for (const auto& f : frames)
+    for (const auto& p : f.players) {
+      for (float v : {p.x, p.y, p.z, p.heading}) mix(v);
+      for (float v : p.angles) mix(v);
+    }
+  return h;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace mc;
@@ -59,9 +83,10 @@ int main(int argc, char** argv) {
     }
     const double fps = static_cast<double>(frames.size()) / best;
     std::printf("%s\n  %zu states -> %zu frames in %.3f s CPU (%.3f s wall), best of %d: %.0f frames/s, %.0f player-poses/s\n"
-                "  one core animates %.0f live games at 20 frames/s; target: a full game in <= 1 s: %s\n",
+                "  one core animates %.0f live games at 20 frames/s; target: a full game in <= 1 s: %s\n"
+                "  frames' digest %016llx\n",
                 log.c_str(), states.size(), frames.size(), best, best_wall, repeat, fps, fps * kMaxPlayers, fps / 20.0,
-                best <= 1.0 ? "PASS" : "FAIL");
+                best <= 1.0 ? "PASS" : "FAIL", static_cast<unsigned long long>(digest(frames)));
     all_ok = all_ok && best <= 1.0;
   }
   return all_ok ? 0 : 1;
