@@ -158,7 +158,7 @@ class NatsClusterFailover : public ::testing::Test {
       n.monitor = free_port();
     }
     for (int i = 0; i < 3; ++i) ASSERT_TRUE(start_node(i));
-    for (int i = 0; i < 3; ++i) ASSERT_TRUE(healthy(i, 30s)) << "node " << i + 1 << " did not join the cluster" << why(i);
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(healthy(i, 60s)) << "node " << i + 1 << " did not join the cluster" << why(i);
   }
   void TearDown() override {
     for (auto* p : {&edge_a_, &edge_b_, &origin_}) p->stop();

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,10 @@ inline std::string find_nats_server() {
 // routes) may take it as its local port; the child then fails with
 // EADDRINUSE. CI saw exactly that as "node 1 did not join the cluster".
 // Below the range only a listener can take it, and the bind check sees one.
+// Never the same port twice in one process (a test takes several before
+// starting anything on them).
 inline std::uint16_t free_port() {
+  static std::set<std::uint16_t> given;
   static std::mt19937 rng(static_cast<unsigned>(::getpid()) ^
                           static_cast<unsigned>(std::chrono::steady_clock::now().time_since_epoch().count()));
   int low = 32768;
@@ -52,7 +56,7 @@ inline std::uint16_t free_port() {
       boost::system::error_code ec;
       a.open(boost::asio::ip::tcp::v4(), ec);
       if (!ec) a.bind({loopback, port}, ec);
-      if (!ec) return port;
+      if (!ec && given.insert(port).second) return port;
     }
   }
   boost::asio::ip::tcp::acceptor a(io, {loopback, 0});  // no room below the range: the old way
