@@ -306,6 +306,10 @@ describe('the director on the page', { timeout: 420000 }, () => {
     await vr.waitForFunction(() => window.__xrRequests.length === 1, null, { timeout: 5000 });
     const req = await vr.evaluate(() => window.__xrRequests[0]);
     assert.equal(req.mode, 'immersive-vr');
+    // The seats show as soon as the browser answers; the page's hook and
+    // its report of the refused session can come later on a loaded machine
+    // (CI saw window.matchcast still undefined here).
+    await vr.waitForFunction(() => (window.matchcast?.stats().stereo.xr.error ?? '') !== '', null, { timeout: 20000 });
     const xr = await vr.evaluate(() => window.matchcast.stats().stereo.xr);
     assert.equal(xr.supported, true);
     assert.match(xr.error ?? '', /no headset/, 'a refused session is reported, the page goes on');
