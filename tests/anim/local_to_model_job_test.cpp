@@ -1,7 +1,10 @@
 #include "anim/local_to_model_job.hpp"
 
 #include <array>
+#include <random>
 #include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <gtest/gtest.h>
 
@@ -46,6 +49,26 @@ TEST(LocalToModelJob, ComposesRotationsInDofOrder) {
   // +X -> Rz(90): +Y.
   const glm::vec3 x = r * glm::vec3(1, 0, 0);
   EXPECT_NEAR(x.y, 1.0f, 1e-5f);
+}
+
+// joint_rotation keeps each angle's sine and cosine in a small table:
+// thousands of different angles (colliding in it), each asked twice, must
+// all give the rotation built independently, never another angle's.
+TEST(LocalToModelJob, RememberedAnglesNeverStandInForOthers) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> any(-180.0f, 180.0f);
+  for (int i = 0; i < 20000; ++i) {
+    const float a[3] = {any(rng), any(rng), i % 7 == 0 ? 0.0f : any(rng)};
+    glm::mat4 want(1.0f);
+    want = glm::rotate(want, glm::radians(a[0]), glm::vec3(0, 0, 1));
+    want = glm::rotate(want, glm::radians(a[1]), glm::vec3(1, 0, 0));
+    want = glm::rotate(want, glm::radians(a[2]), glm::vec3(0, 1, 0));
+    for (int again = 0; again < 2; ++again) {
+      const glm::mat3 r = joint_rotation("zxy", a);
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) ASSERT_NEAR(r[c][k], want[c][k], 2e-6f) << a[0] << " " << a[1] << " " << a[2];
+    }
+  }
 }
 
 }  // namespace
