@@ -118,6 +118,20 @@ TEST(Footsteps, CadenceStaysHumanAtTopSpeed) {
   }
 }
 
+// RoboCup players stop within a cycle: a runner who drops to a shuffle has
+// no flight left to carry, whatever point of the stride the stop meets. (A
+// stop at 1-2 m/s still flies up to 12 frames here, before and after the
+// change; in the full games the floating frames fell by two thirds.)
+TEST(Footsteps, ARunnerWhoStopsToAShuffleComesDown) {
+  for (float fast : {5.5f, 9.0f})
+    for (int start = 60; start < 70; ++start) {
+      FootstepState s;
+      drive(s, start, [fast](int) { return fast; });
+      const Trip after = drive(s, 30, [](int) { return 0.5f; });
+      EXPECT_LE(after.frames_in_flight, 4) << fast << " m/s, stop at frame " << start;
+    }
+}
+
 TEST(Footsteps, ComesToAStandstillWithBothFeetUnderTheHips) {
   FootstepState s;
   drive(s, 60, [](int) { return 4.0f; });
