@@ -1,6 +1,8 @@
-// open_log(): sniff the decoded first bytes, then hand a fresh byte stream
-// to the reader for that format.
-#include <functional>
+// open_log(): sniff the decoded first bytes, then hand the same byte stream,
+// those bytes included, to the reader for that format.
+#include <algorithm>
+#include <cstring>
+#include <memory>
 
 #include "server/ingest/binary_log_source.hpp"
 #include "server/ingest/byte_source.hpp"
@@ -18,11 +20,34 @@ void record_skip(IngestStats& stats, std::string message) {
 
 namespace {
 
-using Reopen = std::function<std::unique_ptr<ByteSource>(std::string&)>;
+// The source after its sniffed head: the head's bytes again, then the rest
+// of the same stream. Sniffing then opens, and for gzip inflates, the input
+// once, not twice, and a file that changes after the sniff cannot hand the
+// parser other bytes than the ones sniffed.
+class HeadReplaySource final : public ByteSource {
+ public:
+  HeadReplaySource(std::string head, std::unique_ptr<ByteSource> rest)
+      : head_(std::move(head)), rest_(std::move(rest)) {}
+  std::size_t read(char* dst, std::size_t n) override {
+    if (pos_ < head_.size()) {
+      const std::size_t k = std::min(n, head_.size() - pos_);
+      std::memcpy(dst, head_.data() + pos_, k);
+      pos_ += k;
+      return k;
+    }
+    return rest_->read(dst, n);
+  }
+  const std::string& error() const override { return rest_->error(); }
+  std::uint64_t raw_offset() const override { return rest_->raw_offset(); }
 
-std::unique_ptr<StateSource> open_with(const Reopen& reopen, const std::string& what,
+ private:
+  std::string head_;
+  std::size_t pos_ = 0;
+  std::unique_ptr<ByteSource> rest_;
+};
+
+std::unique_ptr<StateSource> open_with(std::unique_ptr<ByteSource> probe, const std::string& what,
                                        std::string& error) {
-  auto probe = reopen(error);
   if (!probe) return nullptr;
   // Enough to see past a "ULG6\n" header to the first record.
   std::string head(512, '\0');
@@ -38,9 +63,7 @@ std::unique_ptr<StateSource> open_with(const Reopen& reopen, const std::string& 
     return nullptr;
   }
   const LogFormat fmt = sniff_log_format(head);
-  probe.reset();
-  auto src = reopen(error);
-  if (!src) return nullptr;
+  auto src = std::make_unique<HeadReplaySource>(std::move(head), std::move(probe));
   switch (fmt) {
     case LogFormat::TextV4:
     case LogFormat::TextV5:
@@ -64,11 +87,11 @@ std::unique_ptr<StateSource> open_with(const Reopen& reopen, const std::string& 
 }  // namespace
 
 std::unique_ptr<StateSource> open_log(const std::string& path, std::string& error) {
-  return open_with([&](std::string& err) { return open_file_source(path, err); }, path, error);
+  return open_with(open_file_source(path, error), path, error);
 }
 
 std::unique_ptr<StateSource> open_log_memory(std::string_view bytes, std::string& error) {
-  return open_with([bytes](std::string&) { return open_memory_source(bytes); }, "memory", error);
+  return open_with(open_memory_source(bytes), "memory", error);
 }
 
 }  // namespace mc::ingest

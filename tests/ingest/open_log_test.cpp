@@ -5,8 +5,19 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <future>
+#include <iterator>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 namespace mc::ingest {
@@ -122,6 +133,50 @@ INSTANTIATE_TEST_SUITE_P(Rcg, EveryLog, ::testing::ValuesIn(kExpected),
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return n + "_" + std::to_string(info.index);
                          });
+
+// A log that can be read only once, such as `--log <(zcat game.rcg.gz)` or
+// a named pipe: open_log() sniffs its first bytes and hands the parser the
+// same stream. (It used to open the path a second time for the parser: the
+// writer of a pipe then met a closed reader, and the second open waited for
+// a writer that never came.)
+TEST(OpenLog, APipeIsReadOnceAndWhole) {
+  const std::string file = kData + "generated/gen19-json-20261122030023-Alpha_1-vs-Beta_1.rcg.gz";
+  const Summary want = summarise(file);
+  ASSERT_EQ(want.shows, 699u);
+  char dir[] = "/tmp/mc-open-log-pipe-XXXXXX";
+  ASSERT_NE(::mkdtemp(dir), nullptr);
+  const std::string fifo = std::string(dir) + "/log";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::signal(SIGPIPE, SIG_IGN);  // a closed reader is an error to the writer, not a signal
+  std::thread writer([&] {
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const int fd = ::open(fifo.c_str(), O_WRONLY);
+    if (fd < 0) return;
+    for (std::size_t at = 0; at < bytes.size();) {
+      const ssize_t k = ::write(fd, bytes.data() + at, bytes.size() - at);
+      if (k <= 0) break;
+      at += static_cast<std::size_t>(k);
+    }
+    ::close(fd);
+  });
+  std::promise<Summary> done;
+  auto got = done.get_future();
+  std::thread reader([&] { done.set_value(summarise(fifo)); });
+  if (got.wait_for(std::chrono::seconds(20)) != std::future_status::ready) {
+    ADD_FAILURE() << "open_log() is waiting for a second writer of the pipe";
+    const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);  // lets it see the end
+    if (fd >= 0) ::close(fd);
+  }
+  writer.join();
+  reader.join();
+  const Summary s = got.get();
+  EXPECT_EQ(s.shows, want.shows);
+  EXPECT_EQ(s.last_time, want.last_time);
+  EXPECT_EQ(s.last.left.score, want.last.left.score);
+  EXPECT_EQ(s.last.right.score, want.last.right.score);
+  std::filesystem::remove_all(dir);
+}
 
 TEST(OpenLog, FileWithNoShows) {
   const Summary s = summarise(kData + "real/20190926071807-HELIOS_base_0-vs-null.rcg");
