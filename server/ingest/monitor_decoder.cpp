@@ -80,7 +80,7 @@ MonitorDecoder::Kind MonitorDecoder::decode_binary(std::string_view d, WorldStat
                                                    MessageRecord& msg, std::string& error) {
   using namespace binary;
   if (d.size() != kDispInfoSize && d.size() != kDispInfo2Size) {
-    error = "unrecognised datagram of " + std::to_string(d.size()) + " bytes";
+    error.assign("unrecognised datagram of ").append(std::to_string(d.size())).append(" bytes");
     return Kind::Error;
   }
   const bool v2 = d.size() == kDispInfo2Size;
@@ -123,7 +123,7 @@ MonitorDecoder::Kind MonitorDecoder::decode_binary(std::string_view d, WorldStat
     default:
       break;
   }
-  error = "bad binary record (mode " + std::to_string(mode) + ")";
+  error.assign("bad binary record (mode ").append(std::to_string(mode)).append(")");
   return Kind::Error;
 }
 
