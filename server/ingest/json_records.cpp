@@ -3,38 +3,192 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "server/ingest/text_show.hpp"
 
 namespace mc::ingest {
 namespace {
 
-using nlohmann::json;
+// A record's JSON as a flat tree in one vector, built by nlohmann's SAX
+// parser and kept from record to record on each thread. nlohmann's DOM made
+// a heap node, and a map entry per key, for every value of every record:
+// under ASan that allocation was over half of the JSON log fuzzer's time,
+// and a log is thousands of shows. What the decoders below read of a value
+// is what they read of the DOM: its type, number, text, and children by key,
+// the last one where a key repeats (the DOM keeps the last).
+struct Node {
+  enum class Type : std::uint8_t { Null, Boolean, Number, String, Object, Array };
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  Type type = Type::Null;
+  bool boolean = false;
+  double number = 0;
+  std::string key;   // its key, when in an object
+  std::string text;  // Type::String
+  std::uint32_t first = kNone, last = kNone, next = kNone;  // children; next sibling
+};
 
-bool num(const json& o, const char* key, double& v) {
-  auto it = o.find(key);
-  if (it == o.end() || !it->is_number()) return false;
-  v = it->get<double>();
+class Tree {
+ public:
+  // False when `text` is not one valid JSON value.
+  bool parse(std::string_view text);
+  const Node& at(std::uint32_t i) const { return nodes_[i]; }
+
+ private:
+  friend class TreeBuilder;
+  std::uint32_t add(Node::Type type, const std::string* key);
+  std::vector<Node> nodes_;  // the first used_ are this record's; the rest keep their strings' room
+  std::uint32_t used_ = 0;
+};
+
+std::uint32_t Tree::add(Node::Type type, const std::string* key) {
+  if (used_ == nodes_.size()) nodes_.emplace_back();
+  Node& n = nodes_[used_];
+  n.type = type;
+  n.boolean = false;
+  n.number = 0;
+  if (key) n.key.assign(*key);
+  else n.key.clear();
+  n.text.clear();
+  n.first = n.last = n.next = Node::kNone;
+  return used_++;
+}
+
+// nlohmann::json_sax's interface, appending to a Tree.
+class TreeBuilder {
+ public:
+  using json = nlohmann::json;
+  explicit TreeBuilder(Tree& t) : t_(t) {}
+  bool null() { return value(Node::Type::Null); }
+  bool boolean(bool b) { return value(Node::Type::Boolean, [b](Node& n) { n.boolean = b; }); }
+  bool number_integer(json::number_integer_t v) { return number(static_cast<double>(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return number(static_cast<double>(v)); }
+  bool number_float(json::number_float_t v, const json::string_t&) { return number(v); }
+  bool string(json::string_t& s) { return value(Node::Type::String, [&s](Node& n) { n.text.assign(s); }); }
+  bool binary(json::binary_t&) { return value(Node::Type::Null); }  // never from JSON text
+  bool start_object(std::size_t) { return open(Node::Type::Object); }
+  bool key(json::string_t& k) {
+    key_.assign(k);
+    return true;
+  }
+  bool end_object() { return close(); }
+  bool start_array(std::size_t) { return open(Node::Type::Array); }
+  bool end_array() { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) { return false; }
+
+ private:
+  template <typename Fill = void (*)(Node&)>
+  bool value(Node::Type type, Fill fill = [](Node&) {}) {
+    const std::uint32_t i = link(type);
+    fill(t_.nodes_[i]);
+    return true;
+  }
+  bool number(double v) { return value(Node::Type::Number, [v](Node& n) { n.number = v; }); }
+  bool open(Node::Type type) {
+    stack_.push_back(link(type));
+    return true;
+  }
+  bool close() {
+    if (!stack_.empty()) stack_.pop_back();
+    return true;
+  }
+  // A new node, made the last child of the open container (if any).
+  std::uint32_t link(Node::Type type) {
+    const bool in_object = !stack_.empty() && t_.nodes_[stack_.back()].type == Node::Type::Object;
+    const std::uint32_t i = t_.add(type, in_object ? &key_ : nullptr);
+    if (!stack_.empty()) {
+      Node& parent = t_.nodes_[stack_.back()];
+      if (parent.last == Node::kNone) parent.first = i;
+      else t_.nodes_[parent.last].next = i;
+      parent.last = i;
+    }
+    return i;
+  }
+  Tree& t_;
+  std::vector<std::uint32_t> stack_;
+  std::string key_;
+};
+
+bool Tree::parse(std::string_view text) {
+  used_ = 0;
+  TreeBuilder b(*this);
+  return nlohmann::json::sax_parse(text.begin(), text.end(), &b) && used_ > 0;
+}
+
+// A value of the tree, as the decoders read it.
+class Json {
+ public:
+  Json(const Tree& t, std::uint32_t i) : t_(&t), i_(i) {}
+  bool is_object() const { return node().type == Node::Type::Object; }
+  bool is_array() const { return node().type == Node::Type::Array; }
+  bool is_string() const { return node().type == Node::Type::String; }
+  bool is_number() const { return node().type == Node::Type::Number; }
+  bool is_boolean() const { return node().type == Node::Type::Boolean; }
+  double number() const { return node().number; }
+  bool boolean() const { return node().boolean; }
+  const std::string& text() const { return node().text; }
+  const std::string& key() const { return node().key; }
+  // The member `key` of an object (the last of that name), or none.
+  std::optional<Json> find(std::string_view key) const {
+    std::optional<Json> found;
+    for (std::uint32_t c = node().first; c != Node::kNone; c = t_->at(c).next)
+      if (t_->at(c).key == key) found = Json(*t_, c);
+    return found;
+  }
+  // Calls f(child) for each array element, or for each object member whose
+  // name no later member repeats.
+  template <typename F>
+  void for_each(F f) const {
+    for (std::uint32_t c = node().first; c != Node::kNone; c = t_->at(c).next) {
+      if (is_object() && repeated_later(c)) continue;
+      f(Json(*t_, c));
+    }
+  }
+  // Distinct member names of an object.
+  std::size_t size() const {
+    std::size_t n = 0;
+    for_each([&n](const Json&) { ++n; });
+    return n;
+  }
+
+ private:
+  const Node& node() const { return t_->at(i_); }
+  bool repeated_later(std::uint32_t c) const {
+    for (std::uint32_t d = t_->at(c).next; d != Node::kNone; d = t_->at(d).next)
+      if (t_->at(d).key == t_->at(c).key) return true;
+    return false;
+  }
+  const Tree* t_;
+  std::uint32_t i_;
+};
+
+bool num(const Json& o, const char* key, double& v) {
+  const auto it = o.find(key);
+  if (!it || !it->is_number()) return false;
+  v = it->number();
   return std::isfinite(v);
 }
 
 template <typename Int>
-bool integer(const json& o, const char* key, Int& v, double lo, double hi) {
+bool integer(const Json& o, const char* key, Int& v, double lo, double hi) {
   double d = 0;
   if (!num(o, key, d) || d < lo || d > hi || d != std::floor(d)) return false;
   v = static_cast<Int>(d);
   return true;
 }
 
-bool str(const json& o, const char* key, std::string& v) {
-  auto it = o.find(key);
-  if (it == o.end() || !it->is_string()) return false;
-  v = it->get<std::string>();
+bool str(const Json& o, const char* key, std::string& v) {
+  const auto it = o.find(key);
+  if (!it || !it->is_string()) return false;
+  v = it->text();
   return true;
 }
 
-bool side_of(const json& o, const char* key, Side& s) {
+bool side_of(const Json& o, const char* key, Side& s) {
   std::string v;
   if (!str(o, key, v)) return false;
   if (v == "l") s = Side::Left;
@@ -43,25 +197,24 @@ bool side_of(const json& o, const char* key, Side& s) {
   return true;
 }
 
-void params_from(const json& body, ParamTable& table) {
-  for (auto it = body.begin(); it != body.end(); ++it) {
-    const json& v = it.value();
+void params_from(const Json& body, ParamTable& table) {
+  body.for_each([&table](const Json& v) {
     std::string text;
-    if (v.is_string()) text = v.get<std::string>();
-    else if (v.is_boolean()) text = v.get<bool>() ? "1" : "0";
+    if (v.is_string()) text = v.text();
+    else if (v.is_boolean()) text = v.boolean() ? "1" : "0";
     else if (v.is_number()) {
       char buf[64];
-      std::snprintf(buf, sizeof buf, "%.10g", v.get<double>());
+      std::snprintf(buf, sizeof buf, "%.10g", v.number());
       text = buf;
-    } else continue;
-    table.set(it.key(), std::move(text));
-  }
+    } else return;
+    table.set(v.key(), std::move(text));
+  });
 }
 
-bool team_from(const json& body, TeamInfo& left, TeamInfo& right) {
-  auto side = [](const json& b, const char* key, TeamInfo& t) {
-    auto it = b.find(key);
-    if (it == b.end() || !it->is_object()) return false;
+bool team_from(const Json& body, TeamInfo& left, TeamInfo& right) {
+  auto side = [](const Json& b, const char* key, TeamInfo& t) {
+    const auto it = b.find(key);
+    if (!it || !it->is_object()) return false;
     std::string name;
     if (!str(*it, "name", name)) name.clear();
     t.name = name == "null" ? std::string() : name;
@@ -78,7 +231,7 @@ bool team_from(const json& body, TeamInfo& left, TeamInfo& right) {
   return true;
 }
 
-bool player_from(const json& o, WorldState& out) {
+bool player_from(const Json& o, WorldState& out) {
   Side side{};
   int unum = 0;
   if (!side_of(o, "side", side) || !integer(o, "unum", unum, 1, kPlayersPerSide)) return false;
@@ -124,25 +277,26 @@ bool player_from(const json& o, WorldState& out) {
   return true;
 }
 
-bool show_from(const json& body, GameContext& ctx, WorldState& out) {
+bool show_from(const Json& body, GameContext& ctx, WorldState& out) {
   if (!integer(body, "time", out.time, -1, 1 << 30)) return false;
-  auto ball = body.find("ball");
-  if (ball == body.end() || !ball->is_object()) return false;
+  const auto ball = body.find("ball");
+  if (!ball || !ball->is_object()) return false;
   out.ball = BallState{};
   if (!num(*ball, "x", out.ball.x) || !num(*ball, "y", out.ball.y)) return false;
   num(*ball, "vx", out.ball.vx);
   num(*ball, "vy", out.ball.vy);
   reset_players(out);
-  auto players = body.find("players");
-  if (players == body.end() || !players->is_array()) return false;
-  for (const json& p : *players)
-    if (!p.is_object() || !player_from(p, out)) return false;
+  const auto players = body.find("players");
+  if (!players || !players->is_array()) return false;
+  bool ok = true;
+  players->for_each([&](const Json& p) { ok = ok && p.is_object() && player_from(p, out); });
+  if (!ok) return false;
   std::string mode;
   if (str(body, "mode", mode)) {
     if (auto pm = play_mode_from_name(mode)) ctx.play_mode = *pm;
   }
-  auto team = body.find("team");
-  if (team != body.end() && team->is_object()) team_from(*team, ctx.left, ctx.right);
+  const auto team = body.find("team");
+  if (team && team->is_object()) team_from(*team, ctx.left, ctx.right);
   out.play_mode = ctx.play_mode;
   out.left = ctx.left;
   out.right = ctx.right;
@@ -154,21 +308,26 @@ bool show_from(const json& body, GameContext& ctx, WorldState& out) {
 bool decode_json_record(std::string_view text, GameContext& ctx, WorldState& out,
                         MessageRecord& msg, RecordKind& kind, std::string& error) {
   kind = RecordKind::Other;
-  const json doc = json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
-  if (doc.is_discarded() || !doc.is_object()) {
+  thread_local Tree tree;
+  if (!tree.parse(text) || !Json(tree, 0).is_object()) {
     error = "invalid JSON";
     return false;
   }
+  const Json doc(tree, 0);
   // 19.x: {"kind": body}; 17.x/18.x: {"type": "kind", ...body}.
   std::string name;
-  const json* body = nullptr;
-  auto type = doc.find("type");
-  if (type != doc.end() && type->is_string()) {
-    name = type->get<std::string>();
-    body = &doc;
-  } else if (doc.size() == 1 && doc.begin().value().is_object()) {
-    name = doc.begin().key();
-    body = &doc.begin().value();
+  std::optional<Json> body;
+  const auto type = doc.find("type");
+  if (type && type->is_string()) {
+    name = type->text();
+    body = doc;
+  } else if (doc.size() == 1) {
+    doc.for_each([&](const Json& only) {
+      if (!only.is_object()) return;
+      name = only.key();
+      body = only;
+    });
+    if (!body) return true;
   } else {
     return true;  // {"version":..}, {"timestamp":..}
   }

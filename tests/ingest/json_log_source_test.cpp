@@ -1,6 +1,7 @@
 // JSON logs: the element splitter (braces inside strings, cuts, over-long
 // elements), the three flavours, and bad elements counted with offsets.
 #include "server/ingest/json_splitter.hpp"
+#include "server/ingest/json_records.hpp"
 
 #include <gtest/gtest.h>
 
@@ -97,6 +98,78 @@ TEST(JsonLogSource, RealLogTruncated) {
   EXPECT_GT(v.size(), 200u);
   EXPECT_LT(v.size(), 699u);
   EXPECT_EQ(st.skipped, 1u);
+}
+
+}  // namespace
+}  // namespace mc::ingest
+
+// decode_json_record reads a flat tree built by nlohmann's SAX parser (no
+// DOM per record). It must read what the DOM read: where a key repeats the
+// last one counts, a record of two top-level keys and no "type" is not a
+// kind, and a value of the wrong type fails the record.
+namespace mc::ingest {
+namespace {
+
+struct Decoded {
+  bool ok = false;
+  RecordKind kind = RecordKind::Other;
+  WorldState state;
+  GameContext ctx;
+  std::string error;
+};
+
+Decoded decode(const std::string& text) {
+  Decoded d;
+  MessageRecord msg;
+  d.ok = decode_json_record(text, d.ctx, d.state, msg, d.kind, d.error);
+  return d;
+}
+
+const std::string kBall = R"("ball":{"x":1.5,"y":-2})";
+
+TEST(JsonRecords, RepeatedKeysTakeTheLast) {
+  Decoded d = decode(R"({"show":{"time":1,)" + kBall + R"(,"players":[]},"show":{"time":2,)" + kBall +
+                     R"(,"players":[]}})");
+  EXPECT_TRUE(d.ok) << d.error;
+  EXPECT_EQ(d.kind, RecordKind::Show);
+  EXPECT_EQ(d.state.time, 2);
+  // A player's "x" first as text, then as a number: the number counts.
+  d = decode(R"({"show":{"time":3,)" + kBall +
+             R"(,"players":[{"side":"l","unum":4,"type":0,"state":1,"x":"far","x":7.25,"y":1}]}})");
+  EXPECT_TRUE(d.ok) << d.error;
+  EXPECT_DOUBLE_EQ(d.state.players[3].x, 7.25);
+  // And the other way round: the record fails.
+  d = decode(R"({"show":{"time":3,)" + kBall +
+             R"(,"players":[{"side":"l","unum":4,"type":0,"state":1,"x":7.25,"x":"far","y":1}]}})");
+  EXPECT_FALSE(d.ok);
+  EXPECT_EQ(d.error, "bad show record");
+  // "type" repeated: the last names the kind.
+  d = decode(R"({"type":"msg","type":"playmode","mode":"play_on"})");
+  EXPECT_TRUE(d.ok) << d.error;
+  EXPECT_EQ(d.kind, RecordKind::PlayMode);
+  EXPECT_EQ(d.ctx.play_mode, PlayMode::PlayOn);
+}
+
+TEST(JsonRecords, WhatIsNotARecordKind) {
+  Decoded d = decode(R"({"show":{"time":1,)" + kBall + R"(,"players":[]},"version":"19"})");
+  EXPECT_TRUE(d.ok);
+  EXPECT_EQ(d.kind, RecordKind::Other);
+  d = decode(R"({"show":[1,2]})");
+  EXPECT_TRUE(d.ok);
+  EXPECT_EQ(d.kind, RecordKind::Other);
+  // Not an object, two values, cut short, empty, a number past double's range.
+  for (const char* bad : {R"({"show":{"time":1})", "[1,2]", R"({"a":1} {"b":2})", "", R"({"a":1e999})"}) {
+    d = decode(bad);
+    EXPECT_FALSE(d.ok) << bad;
+    EXPECT_EQ(d.error, "invalid JSON") << bad;
+  }
+  // The server parameters, numbers and flags as the DOM wrote them.
+  d = decode(R"({"server_param":{"ball_size":0.085,"goal_width":14.02,"synch_mode":true,"x":null,"v":"a","v":"b"}})");
+  EXPECT_TRUE(d.ok);
+  EXPECT_EQ(d.ctx.params.server.text("ball_size"), "0.085");
+  EXPECT_EQ(d.ctx.params.server.text("synch_mode"), "1");
+  EXPECT_EQ(d.ctx.params.server.text("v"), "b");
+  EXPECT_FALSE(d.ctx.params.server.has("x"));
 }
 
 }  // namespace
