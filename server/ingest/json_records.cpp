@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -140,28 +141,38 @@ class Json {
     return found;
   }
   // Calls f(child) for each array element, or for each object member whose
-  // name no later member repeats.
+  // name no later member repeats, in the record's order.
   template <typename F>
   void for_each(F f) const {
-    for (std::uint32_t c = node().first; c != Node::kNone; c = t_->at(c).next) {
-      if (is_object() && repeated_later(c)) continue;
-      f(Json(*t_, c));
+    if (!is_object()) {
+      for (std::uint32_t c = node().first; c != Node::kNone; c = t_->at(c).next) f(Json(*t_, c));
+      return;
     }
+    // Sorted by name (equal names in record order), the last of each name is
+    // the one kept: O(n log n), where comparing every pair took 14 s for a
+    // hostile record of 100,000 keys (a log's records may be 8 MB).
+    std::vector<std::uint32_t> members;
+    for (std::uint32_t c = node().first; c != Node::kNone; c = t_->at(c).next) members.push_back(c);
+    std::stable_sort(members.begin(), members.end(),
+                     [this](std::uint32_t a, std::uint32_t b) { return t_->at(a).key < t_->at(b).key; });
+    std::vector<std::uint32_t> kept;
+    for (std::size_t k = 0; k < members.size(); ++k)
+      if (k + 1 == members.size() || t_->at(members[k + 1]).key != t_->at(members[k]).key) kept.push_back(members[k]);
+    std::sort(kept.begin(), kept.end());  // nodes are numbered in record order
+    for (const std::uint32_t c : kept) f(Json(*t_, c));
   }
-  // Distinct member names of an object.
-  std::size_t size() const {
-    std::size_t n = 0;
-    for_each([&n](const Json&) { ++n; });
-    return n;
+  // The member of an object whose members all have one name (the last of
+  // them, as the DOM kept it), or none.
+  std::optional<Json> only_member() const {
+    const std::uint32_t first = node().first;
+    if (first == Node::kNone) return std::nullopt;
+    for (std::uint32_t c = t_->at(first).next; c != Node::kNone; c = t_->at(c).next)
+      if (t_->at(c).key != t_->at(first).key) return std::nullopt;
+    return Json(*t_, node().last);
   }
 
  private:
   const Node& node() const { return t_->at(i_); }
-  bool repeated_later(std::uint32_t c) const {
-    for (std::uint32_t d = t_->at(c).next; d != Node::kNone; d = t_->at(d).next)
-      if (t_->at(d).key == t_->at(c).key) return true;
-    return false;
-  }
   const Tree* t_;
   std::uint32_t i_;
 };
@@ -321,13 +332,9 @@ bool decode_json_record(std::string_view text, GameContext& ctx, WorldState& out
   if (type && type->is_string()) {
     name = type->text();
     body = doc;
-  } else if (doc.size() == 1) {
-    doc.for_each([&](const Json& only) {
-      if (!only.is_object()) return;
-      name = only.key();
-      body = only;
-    });
-    if (!body) return true;
+  } else if (const auto only = doc.only_member(); only && only->is_object()) {
+    name = only->key();
+    body = only;
   } else {
     return true;  // {"version":..}, {"timestamp":..}
   }
