@@ -7,9 +7,15 @@
 namespace mc::relay {
 namespace {
 
-// The slot of kKeptControlTypes that `json` goes to, or -1. Control
-// messages are a few a second: one parse each costs nothing that matters.
+// The slot of kKeptControlTypes that `json` goes to, or -1. A kept type
+// can only be named by its quoted text or through an escape, so a message
+// with neither (a replay's status, once a second per spectator, or any
+// other type) is not parsed at all.
 int kept_slot(std::string_view json) {
+  bool named = json.find('\\') != std::string_view::npos;
+  for (const char* type : Channel::kKeptControlTypes)
+    named = named || json.find(std::string("\"") + type + '"') != std::string_view::npos;
+  if (!named) return -1;
   const auto j = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
   if (!j.is_object()) return -1;
   const auto it = j.find("type");

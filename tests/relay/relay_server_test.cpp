@@ -122,7 +122,10 @@ TEST_F(RelayServerTest, LateJoinerGetsTheLatestTeamsAndScoreRightAfterTheHello) 
   const std::string teams0 = R"({"left":{"name":""},"right":{"name":""},"seq":0,"type":"teams"})";
   const std::string teams1 = R"({"left":{"name":"A"},"right":{"name":"B"},"seq":3,"type":"teams"})";
   const std::string score0 = R"({"left":0,"right":0,"seq":0,"time":0,"type":"score"})";
-  const std::string score1 = R"({"left":0,"right":1,"seq":22,"time":11,"type":"score"})";
+  // Named through an escape: still a score (the channel's quick look for a
+  // kept type's name must not miss it).
+  const std::string score1 = R"({"left":0,"right":1,"seq":22,"time":11,"type":"\u0073core"})";
+  const std::string about_teams = R"({"type":"note","text":"teams"})";
   const std::string stamina = R"({"left":[],"right":[],"seq":20,"time":10,"type":"stamina"})";
   const std::string goal = R"({"score":[0,1],"seq":22,"time":11,"type":"goal"})";
   // Published in another order than a joiner gets them; events and stamina are not kept.
@@ -130,6 +133,7 @@ TEST_F(RelayServerTest, LateJoinerGetsTheLatestTeamsAndScoreRightAfterTheHello) 
   channel_->publish_control(teams0);
   for (int f = 0; f < 45; ++f) {
     if (f == 3) channel_->publish_control(teams1);
+    if (f == 4) channel_->publish_control(about_teams);
     if (f == 20) channel_->publish_control(stamina);
     if (f == 22) channel_->publish_control(goal), channel_->publish_control(score1);
     channel_->publish_frame(frame_bytes(f, f % 20 == 0), f % 20 == 0);
