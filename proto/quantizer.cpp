@@ -26,6 +26,7 @@ Side side_value(std::uint8_t c) { return c == 1 ? Side::Left : c == 2 ? Side::Ri
 }  // namespace
 
 Quantizer::Quantizer(const SkeletonDef& skeleton) {
+  grids_.reserve(kMaxDof);
   for (const auto& joint : skeleton.joints) {
     for (std::size_t d = 0; d < joint.dofs.size(); ++d) {
       if (static_cast<int>(grids_.size()) >= kMaxDof) break;

@@ -97,21 +97,27 @@ bool RecordingReader::open(const std::string& path, std::string& error,
     error = path + ": no valid hello record" + (error.empty() ? "" : " (" + error + ")");
     return false;
   }
-  std::string hello_json;
-  if (!rec::parse_hello(view.payload, hello_json, error, major_)) {
-    error = path + ": " + error;
-    return false;
-  }
-  if (known && known->json == hello_json) {
+  if (known && known->major == major_ && known->stored == view.payload) {
     hello_ = std::move(known);
   } else {
-    auto parsed = std::make_shared<RecordingHello>();
-    parsed->json = std::move(hello_json);
-    if (!proto::hello_from_json(parsed->json, parsed->hello, error)) {
+    std::string hello_json;
+    if (!rec::parse_hello(view.payload, hello_json, error, major_)) {
       error = path + ": " + error;
       return false;
     }
-    hello_ = std::move(parsed);
+    if (known && known->json == hello_json) {
+      hello_ = std::move(known);
+    } else {
+      auto parsed = std::make_shared<RecordingHello>();
+      parsed->json = std::move(hello_json);
+      if (!proto::hello_from_json(parsed->json, parsed->hello, error)) {
+        error = path + ": " + error;
+        return false;
+      }
+      parsed->stored.assign(view.payload);
+      parsed->major = major_;
+      hello_ = std::move(parsed);
+    }
   }
   decoder_.emplace(hello_->hello.skeleton);
   data_start_ = rec::kFileHeaderSize + hello_size;

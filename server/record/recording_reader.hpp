@@ -27,6 +27,11 @@ namespace mc::record {
 struct RecordingHello {
   std::string json;
   proto::Hello hello;
+  // The hello record's payload as the file stores it (deflated from format
+  // 3 on): a reader given this hello compares these bytes first and skips
+  // the inflate when they match, the common case of one file opened again.
+  std::string stored;
+  std::uint8_t major = 0;  // the file format `stored` was read from
 };
 
 class RecordingReader {

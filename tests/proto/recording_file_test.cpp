@@ -96,6 +96,29 @@ TEST_F(RecordingFile, ClosedFileReadsBackEveryFrameAndControl) {
   EXPECT_NE(controls[0].find("\"kick\""), std::string::npos);
 }
 
+TEST_F(RecordingFile, AKnownHelloIsSharedOnlyWithTheSameHello) {
+  // The relay opens a reader per replay spectator and gives each the hello
+  // the catalog read: it must be taken for the same file, and never for a
+  // file whose hello differs (another game written under the same name).
+  const std::string path = write(40, true);
+  RecordingReader first;
+  std::string error;
+  ASSERT_TRUE(first.open(path, error)) << error;
+  const auto known = first.shared_hello();
+  RecordingReader again;
+  ASSERT_TRUE(again.open(path, error, known)) << error;
+  EXPECT_EQ(again.shared_hello(), known);
+
+  hello.left.name = "Other";
+  const std::string other = write(40, true);
+  RecordingReader changed;
+  ASSERT_TRUE(changed.open(other, error, known)) << error;
+  EXPECT_NE(changed.shared_hello(), known);
+  EXPECT_EQ(changed.hello().left.name, "Other");
+  PoseFrame f;
+  EXPECT_TRUE(changed.next(f, error)) << error;
+}
+
 TEST_F(RecordingFile, TranscodingKeepsEveryDecodedValue) {
   for (int interval : {0, 7, 40}) {
     WriterOptions options;
