@@ -58,16 +58,20 @@ float rotation_between(const std::string& dofs, const float* a, const float* b) 
 }
 
 // Scales each joint's change since `last` down to at most its group's
-// limit per frame; `limited` gets the joints it held back. A joint whose
+// limit per frame (kMaxKickLegStepDeg for the leg of `kicking_foot`, 0
+// right, 1 left, -1 none); `limited` gets the joints it held back. A joint whose
 // dofs moved by less than the limit in total cannot have rotated further
 // (each elementary rotation adds at most its own angle), so only the others
 // are measured.
-void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<float> a, bool limited[kHumanJointCount]) {
+void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<float> a, bool limited[kHumanJointCount],
+                       int kicking_foot) {
+  const std::size_t kick_thigh = kicking_foot == 0 ? kRThigh : kLThigh;
   std::size_t k = 0;
   for (std::size_t j = 0; j < skel.joints.size() && j < kHumanJointCount; ++j) {
     const JointDef& jd = skel.joints[j];
     const std::size_t n = jd.dofs.size();
-    const float cap = j >= kRThigh ? kMaxLegStepDeg : kMaxUpperStepDeg;
+    const bool kicking = kicking_foot >= 0 && j >= kick_thigh && j < kick_thigh + 3;  // thigh, shin, foot
+    const float cap = kicking ? kMaxKickLegStepDeg : j >= kRThigh ? kMaxLegStepDeg : kMaxUpperStepDeg;
     limited[j] = false;
     float sum = 0;
     for (std::size_t d = 0; d < n; ++d) sum += std::fabs(a[k + d] - last[k + d]);
@@ -563,7 +567,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // back, that foot lets go of the grass next frame rather than slide.
   bool limited[kHumanJointCount] = {};
   if (!in.reset) {
-    limit_joint_speed(limits_from, ctx.last_angles.data(), a, limited);
+    limit_joint_speed(limits_from, ctx.last_angles.data(), a, limited, contact ? act->kick_foot : -1);
     for (int i = 0; i < 2; ++i) {
       const int j0 = i == 0 ? kRThigh : kLThigh;
       if (lo.planted[i] && (limited[j0] || limited[j0 + 1] || limited[j0 + 2])) ctx.loco.feet[i].release = true;
