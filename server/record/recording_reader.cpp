@@ -59,6 +59,7 @@ bool RecordingReader::open(const std::string& path, std::string& error,
   hello_ = no_hello();
   stream_.reset();  // it holds a reference to the decoder
   decoder_.reset();
+  opened_ = false;
   chunks_.clear();
   recovered_ = false;
   ignored_tail_ = 0;
@@ -119,7 +120,6 @@ bool RecordingReader::open(const std::string& path, std::string& error,
       hello_ = std::move(parsed);
     }
   }
-  decoder_.emplace(hello_->hello.skeleton);
   data_start_ = rec::kFileHeaderSize + hello_size;
 
   if (!load_index(file_size)) {
@@ -127,7 +127,15 @@ bool RecordingReader::open(const std::string& path, std::string& error,
     chunks_.clear();
     if (!scan(data_start_, file_size, error)) return false;
   }
+  opened_ = true;
   return true;
+}
+
+// Made when the first frame is read: a reader opened for its hello, its
+// index or a spectator who leaves at once never builds the decoder's model.
+proto::FrameDecoder& RecordingReader::decoder() {
+  if (!decoder_) decoder_ = std::make_unique<proto::FrameDecoder>(hello_->hello.skeleton);
+  return *decoder_;
 }
 
 bool RecordingReader::load_index(std::uint64_t file_size) {
@@ -221,7 +229,7 @@ bool RecordingReader::load_chunk(std::size_t index, std::string& error) {
   if (!frame_stream.empty()) {
     std::uint32_t frames = 0;
     for (const auto& e : entries_) frames += e.kind == rec::ChunkEntry::Kind::StreamFrame ? 1u : 0u;
-    stream_.emplace(*decoder_, frame_stream,
+    stream_.emplace(decoder(), frame_stream,
                     proto::StreamStart{info.first_seq, info.first_time, info.first_stoppage, info.first_substep}, frames);
   }
   chunk_ = index;
@@ -238,7 +246,7 @@ void RecordingReader::rewind() {
 
 bool RecordingReader::next(PoseFrame& out, std::string& error, std::vector<std::string>* controls) {
   error.clear();
-  if (!decoder_) {
+  if (!opened_) {
     error = "recording is not open";
     return false;
   }
@@ -259,12 +267,12 @@ bool RecordingReader::next(PoseFrame& out, std::string& error, std::vector<std::
       // The rest of this chunk's stream cannot be found: skip it, and wait
       // for a keyframe, as a live client would.
       stream_.reset();
-      decoder_->reset();
+      decoder().reset();
       ++skipped_frames_;
       error.clear();
       continue;
     }
-    if (decoder_->decode(e.bytes, out, error)) return true;
+    if (decoder().decode(e.bytes, out, error)) return true;
     // A frame that does not decode (a delta whose base was in a damaged
     // chunk): skip to the next keyframe, as a live client would.
     ++skipped_frames_;
@@ -277,7 +285,7 @@ bool RecordingReader::seek(int time, PoseFrame& out, std::string& error, int sto
     error = path_ + ": the recording holds no frames";
     return false;
   }
-  decoder_->reset();
+  decoder().reset();
   if (!load_chunk(rec::find_chunk(chunks_, time, stoppage), error)) return false;
   while (next(out, error)) {
     if (out.time > time || (out.time == time && out.stoppage >= stoppage)) return true;

@@ -93,11 +93,14 @@ class RecordingReader {
   bool load_index(std::uint64_t file_size);
   bool scan(std::uint64_t from, std::uint64_t file_size, std::string& error);
   bool load_chunk(std::size_t index, std::string& error);
+  proto::FrameDecoder& decoder();
 
   int fd_ = -1;
   std::string path_;
   std::shared_ptr<const RecordingHello> hello_;  // never null: an empty one before open()
-  std::optional<proto::FrameDecoder> decoder_;
+  // See decoder(). On the heap, made when needed: its model is tens of KB.
+  std::unique_ptr<proto::FrameDecoder> decoder_;
+  bool opened_ = false;                         // the last open() succeeded
   std::vector<proto::rec::ChunkInfo> chunks_;
   bool recovered_ = false;
   std::uint64_t ignored_tail_ = 0;

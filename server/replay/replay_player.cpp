@@ -56,10 +56,10 @@ ReplayPlayer::ReplayPlayer(boost::asio::any_io_executor executor, std::string na
                            bool follow)
     : timer_(executor),
       name_(std::move(name)),
+      name_json_(nlohmann::json(name_).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)),
       reader_(std::move(reader)),
       summary_(std::move(summary)),
       channel_(std::make_shared<relay::Channel>("replay:" + name_)),
-      encoder_(reader_->hello().skeleton),
       follow_(follow) {
   // A recording made before match_ids were public may name a server path.
   // The reader parsed the hello already: only a match_id with a path needs
@@ -68,6 +68,13 @@ ReplayPlayer::ReplayPlayer(boost::asio::any_io_executor executor, std::string na
   const bool has_path = reader_->hello().match_id.find_first_of("/\\") != std::string::npos;
   channel_->set_hello(has_path ? proto::hello_without_paths(reader_->hello_json()) : reader_->hello_json());
   channel_->set_feed_state(relay::FeedState::Live);
+}
+
+// Made on the first frame sent: a spectator who leaves before (or a
+// player that only answers messages) never builds its model.
+proto::FrameEncoder& ReplayPlayer::encoder() {
+  if (!encoder_) encoder_ = std::make_unique<proto::FrameEncoder>(reader_->hello().skeleton);
+  return *encoder_;
 }
 
 void ReplayPlayer::start() {
@@ -124,7 +131,7 @@ bool ReplayPlayer::send_next() {
   f.server_time_ms = unix_ms();
   time_ = f.time;
   bool key = false;
-  channel_->publish_frame(encoder_.encode(f, key), key);
+  channel_->publish_frame(encoder().encode(f, key), key);
   return true;
 }
 
@@ -144,9 +151,9 @@ void ReplayPlayer::seek(int time) {
   f.server_time_ms = unix_ms();
   time_ = f.time;
   if (follow_ && f.time > summary_.last_time) summary_.note(f);
-  encoder_.force_keyframe();
+  encoder().force_keyframe();
   bool key = false;
-  channel_->publish_frame(encoder_.encode(f, key), key);
+  channel_->publish_frame(encoder().encode(f, key), key);
 }
 
 void ReplayPlayer::on_client_message(std::string_view text) {
@@ -199,20 +206,38 @@ void ReplayPlayer::on_client_message(std::string_view text) {
   publish_status();
 }
 
+// Written as text, keys in the order nlohmann's object would sort them: a
+// status goes out on every frame's second and every spectator action, and
+// a JSON tree for nine keys was most of its cost.
 void ReplayPlayer::publish_status() {
   frames_since_status_ = 0;
-  nlohmann::json goals = nlohmann::json::array();
-  for (const auto& g : summary_.goals) goals.push_back({{"time", g.time}, {"side", g.side == Side::Left ? "l" : "r"}});
-  channel_->publish_control(nlohmann::json{{"type", "replay"},
-                                           {"name", name_},
-                                           {"time", time_},
-                                           {"paused", paused_},
-                                           {"speed", speed_},
-                                           {"first_time", summary_.first_time},
-                                           {"last_time", summary_.last_time},
-                                           {"goals", goals},
-                                           {"live_edge", follow_ && time_ >= summary_.last_time}}
-                                .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+  const auto flag = [](bool b) { return b ? "true" : "false"; };
+  std::string s;
+  s.reserve(160 + 24 * summary_.goals.size() + name_json_.size());
+  s += R"({"first_time":)";
+  s += std::to_string(summary_.first_time);
+  s += R"(,"goals":[)";
+  for (std::size_t i = 0; i < summary_.goals.size(); ++i) {
+    s += i == 0 ? R"({"side":")" : R"(,{"side":")";
+    s += summary_.goals[i].side == Side::Left ? 'l' : 'r';
+    s += R"(","time":)";
+    s += std::to_string(summary_.goals[i].time);
+    s += '}';
+  }
+  s += R"(],"last_time":)";
+  s += std::to_string(summary_.last_time);
+  s += R"(,"live_edge":)";
+  s += flag(follow_ && time_ >= summary_.last_time);
+  s += R"(,"name":)";
+  s += name_json_;
+  s += R"(,"paused":)";
+  s += flag(paused_);
+  s += R"(,"speed":)";
+  s += nlohmann::json(speed_).dump();
+  s += R"(,"time":)";
+  s += std::to_string(time_);
+  s += R"(,"type":"replay"})";
+  channel_->publish_control(std::move(s));
 }
 
 void ReplayPlayer::close() {

@@ -76,13 +76,16 @@ class ReplayPlayer : public relay::ReplaySource, public std::enable_shared_from_
   bool send_next();
   void seek(int time);
   void publish_status();
+  proto::FrameEncoder& encoder();
 
   boost::asio::steady_timer timer_;
   std::string name_;
+  std::string name_json_;  // name_ as a JSON string, for the status
   std::unique_ptr<record::RecordingReader> reader_;
   RecordingSummary summary_;
   std::shared_ptr<relay::Channel> channel_;
-  proto::FrameEncoder encoder_;
+  // See encoder(). On the heap, made when needed: its model is tens of KB.
+  std::unique_ptr<proto::FrameEncoder> encoder_;
   std::vector<std::string> controls_;
   std::uint32_t seq_ = 0;
   int time_ = 0;

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <boost/asio/io_context.hpp>
+#include <nlohmann/json.hpp>
+
+#include "tests/relay/channel_collector.hpp"
 
 namespace mc::replay {
 namespace {
@@ -48,6 +51,54 @@ TEST(ReplayPlayer, ASeekFarOutsideTheRecordingIsClampedToIt) {
   EXPECT_LT(p->time(), last);
   p->close();
   ioc.poll();
+}
+
+TEST(ReplayPlayer, ItsStatusIsTheJsonASpectatorsSeekBarReads) {
+  // The status is written as text: it must read as the same JSON object a
+  // tree would have written (nlohmann's own dump of it is byte for byte the
+  // same), with every field a spectator uses. A name that needs escaping
+  // stays a string.
+  boost::asio::io_context ioc;
+  auto reader = std::make_unique<record::RecordingReader>();
+  std::string error;
+  ASSERT_TRUE(reader->open(kGolden, error)) << error;
+  RecordingSummary summary;
+  ASSERT_TRUE(summarize(*reader, summary, error)) << error;
+  const std::size_t recorded = summary.goals.size();  // the golden game's own
+  summary.goals.push_back({summary.first_time + 3, Side::Right});
+  summary.goals.push_back({summary.first_time + 5, Side::Left});
+  const std::string name = "g\"o\\al\n.mcrec";
+  auto p = std::make_shared<ReplayPlayer>(ioc.get_executor(), name, std::move(reader), summary);
+  auto collector = std::make_shared<relay::testing::ChannelCollector>();
+  p->channel()->join(collector);
+  p->start();
+  p->on_client_message(R"({"type":"replay","action":"speed","speed":0.5})");
+  p->on_client_message(R"({"type":"replay","action":"pause"})");
+  p->close();
+  ioc.poll();
+  std::vector<nlohmann::json> statuses;
+  for (const auto& m : collector->snapshot()) {
+    if (m.binary()) continue;
+    const auto j = nlohmann::json::parse(*m.bytes, nullptr, false);
+    ASSERT_TRUE(j.is_object()) << *m.bytes;
+    if (j.value("type", "") != "replay") continue;
+    EXPECT_EQ(j.dump(), *m.bytes);
+    statuses.push_back(j);
+  }
+  ASSERT_EQ(statuses.size(), 3u);  // start, speed, pause
+  const auto& last = statuses.back();
+  EXPECT_EQ(last["name"], name);
+  EXPECT_EQ(last["paused"], true);
+  EXPECT_EQ(last["speed"], 0.5);
+  EXPECT_EQ(last["first_time"], summary.first_time);
+  EXPECT_EQ(last["last_time"], summary.last_time);
+  EXPECT_EQ(last["live_edge"], false);
+  ASSERT_EQ(last["goals"].size(), recorded + 2);
+  EXPECT_EQ(last["goals"][recorded]["side"], "r");
+  EXPECT_EQ(last["goals"][recorded]["time"], summary.first_time + 3);
+  EXPECT_EQ(last["goals"][recorded + 1]["side"], "l");
+  EXPECT_EQ(statuses.front()["speed"], 1.0);
+  EXPECT_EQ(statuses.front()["paused"], false);
 }
 
 }  // namespace
