@@ -45,6 +45,11 @@ float envelope(const ActionMotion& m, float tau, float in_s, float out_s) {
   return std::min(smoothstep((tau - m.start_s) / in_s), smoothstep((m.end_s - tau) / out_s));
 }
 
+// Sideways gap (m) between the support foot and the kicking foot's landing.
+constexpr float kLandingClearance = 0.24f;
+// The least sideways gap while the foot follows through.
+constexpr float kFollowClearance = 0.16f;
+
 void kick(const ActionMotion& m, float tau, float heading, float root_x, float root_y, ActionSample& s) {
   s.feet = true;
   // Ramp in over at most 0.1 s, and fully in by contact whatever the look-ahead.
@@ -60,11 +65,35 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
   if (tau > m.follow_s) {
     const float side_k = k == 0 ? 1.0f : -1.0f;
     const BodyFrame body(root_x, root_y, heading);
+    // Beside the body, and on its own side of a support foot that is still
+    // planted where the kick left it (the body may have drifted over it):
+    // the shins must not cross.
+    float lz = side_k * 0.12f;
+    if (pm::hypot(m.support_x - root_x, m.support_y - root_y) <= 0.45f) {
+      float sbx, sbz;
+      body.to_body(m.support_x, m.support_y, sbx, sbz);
+      if (side_k * (lz - sbz) < kLandingClearance) lz = sbz + side_k * kLandingClearance;
+    }
     float lx, ly;
-    body.to_field(0.05f, side_k * 0.12f, lx, ly);
+    body.to_field(0.05f, lz, lx, ly);
     const float w = smoothstep((tau - m.follow_s) / std::max(m.end_s - m.follow_s, 0.05f));
     s.foot_x[k] += (lx - s.foot_x[k]) * w;
     s.foot_y[k] += (ly - s.foot_y[k]) * w;
+  }
+  // After contact the body may turn away while the foot follows through
+  // along the kick: the foot is kept on its own side of a support foot that
+  // is still planted, eased in over 0.1 s (the contact stays where it was).
+  if (tau > 0 && pm::hypot(m.support_x - root_x, m.support_y - root_y) <= 0.45f) {
+    const float side_k = k == 0 ? 1.0f : -1.0f;
+    const BodyFrame body(root_x, root_y, heading);
+    float fbx, fbz, sbx, sbz;
+    body.to_body(s.foot_x[k], s.foot_y[k], fbx, fbz);
+    body.to_body(m.support_x, m.support_y, sbx, sbz);
+    const float need = sbz + side_k * kFollowClearance;
+    if (side_k * (fbz - need) < 0) {
+      fbz += (need - fbz) * smoothstep(tau / 0.1f);
+      body.to_field(fbx, fbz, s.foot_x[k], s.foot_y[k]);
+    }
   }
   s.foot_h[k] = std::max(m.contact_h + up, dims::kAnkleHeight);
   s.foot_yaw[k] = m.foot_yaw;

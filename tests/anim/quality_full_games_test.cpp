@@ -45,9 +45,13 @@ struct Bounds {
 // Kicks: the kicking leg may turn 57 deg on its contact frame (50 before,
 // anim/player_animation.hpp) since 2026-11-26: the farthest foot from the
 // ball at contact 0.144/0.036 m -> 0.084/0.021 m, so the bound went 0.15 -> 0.09.
-constexpr Bounds kAt20Hz{0.20, 4.8, 0.02, 0.09, 0, 60, 45, 45, 45, 580, 52, 90, 45, 0, 500, 0.02, 4.5,
+// Legs apart: after contact the kicking foot keeps to its own side of the
+// planted support foot (anim/action_motion.cpp) since 2026-11-26: thighs /
+// shins / feet too close 39/53/34 -> 26/11/16 and 49/83/30 -> 39/19/17 at
+// 20 Hz; the bounds went 52/90/45 -> 45/25/22 (60 Hz 800/370/250 -> 740/160/200).
+constexpr Bounds kAt20Hz{0.20, 4.8, 0.02, 0.09, 0, 60, 45, 45, 45, 580, 45, 25, 22, 0, 500, 0.02, 4.5,
                          -0.02, 0.31};
-constexpr Bounds kAt60Hz{0.20, 4.9, 0.02, 0.09, 0, 60, 45, 45, 45, 2100, 800, 370, 250, 0, 1200, 0.02, 4.5,
+constexpr Bounds kAt60Hz{0.20, 4.9, 0.02, 0.09, 0, 60, 45, 45, 45, 2100, 740, 160, 200, 0, 1200, 0.02, 4.5,
                          -0.11, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
