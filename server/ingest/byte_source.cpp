@@ -8,6 +8,8 @@
 #include <cstring>
 #include <vector>
 
+#include "server/ingest/held_bytes.hpp"
+
 namespace mc::ingest {
 namespace {
 
@@ -62,16 +64,10 @@ class MemoryInput final : public RawInput {
 class PlainSource final : public ByteSource {
  public:
   PlainSource(std::unique_ptr<RawInput> in, std::string prefix)
-      : in_(std::move(in)), prefix_(std::move(prefix)) {}
+      : in_(std::move(in)), prefix_{std::move(prefix)} {}
   std::size_t read(char* dst, std::size_t n) override {
-    if (prefix_pos_ < prefix_.size()) {
-      const std::size_t k = std::min(n, prefix_.size() - prefix_pos_);
-      std::memcpy(dst, prefix_.data() + prefix_pos_, k);
-      prefix_pos_ += k;
-      offset_ += k;
-      return k;
-    }
-    const std::size_t k = in_->read(dst, n);
+    std::size_t k = prefix_.take(dst, n);
+    if (k == 0) k = in_->read(dst, n);
     offset_ += k;
     return k;
   }
@@ -80,8 +76,7 @@ class PlainSource final : public ByteSource {
 
  private:
   std::unique_ptr<RawInput> in_;
-  std::string prefix_;
-  std::size_t prefix_pos_ = 0;
+  HeldBytes prefix_;  // the magic bytes read to choose this source
   std::uint64_t offset_ = 0;
 };
 

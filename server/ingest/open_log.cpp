@@ -1,11 +1,10 @@
 // open_log(): sniff the decoded first bytes, then hand the same byte stream,
 // those bytes included, to the reader for that format.
-#include <algorithm>
-#include <cstring>
 #include <memory>
 
 #include "server/ingest/binary_log_source.hpp"
 #include "server/ingest/byte_source.hpp"
+#include "server/ingest/held_bytes.hpp"
 #include "server/ingest/json_log_source.hpp"
 #include "server/ingest/log_format.hpp"
 #include "server/ingest/state_source.hpp"
@@ -27,22 +26,16 @@ namespace {
 class HeadReplaySource final : public ByteSource {
  public:
   HeadReplaySource(std::string head, std::unique_ptr<ByteSource> rest)
-      : head_(std::move(head)), rest_(std::move(rest)) {}
+      : head_{std::move(head)}, rest_(std::move(rest)) {}
   std::size_t read(char* dst, std::size_t n) override {
-    if (pos_ < head_.size()) {
-      const std::size_t k = std::min(n, head_.size() - pos_);
-      std::memcpy(dst, head_.data() + pos_, k);
-      pos_ += k;
-      return k;
-    }
+    if (const std::size_t k = head_.take(dst, n)) return k;
     return rest_->read(dst, n);
   }
   const std::string& error() const override { return rest_->error(); }
   std::uint64_t raw_offset() const override { return rest_->raw_offset(); }
 
  private:
-  std::string head_;
-  std::size_t pos_ = 0;
+  HeldBytes head_;
   std::unique_ptr<ByteSource> rest_;
 };
 
