@@ -82,8 +82,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fx.put(file);
 
   // The reader's own work (records, index, scan, chunks, seeking) on every
-  // input; the frames' decoding only as far as a few frames (each real frame
-  // costs ~0.1 ms under the sanitizers; proto_frame_decoder_fuzz covers it).
+  // input; the frames' decoding only as far as a few frames: the codec is
+  // linked uninstrumented here (tests/replay/CMakeLists.txt), and
+  // proto_frame_decoder_fuzz fuzzes it.
   mc::record::RecordingReader reader;
   std::string error;
   if (!reader.open(fx.path, error, fx.parsed_hello)) return 0;
