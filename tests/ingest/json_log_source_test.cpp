@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "server/ingest/state_source.hpp"
+#include "tests/ingest/dribble_source.hpp"
 #include "tests/ingest/test_data.hpp"
 
 namespace mc::ingest {
@@ -42,6 +43,29 @@ TEST(JsonSplitter, BracesInStringsAndCuts) {
   EXPECT_EQ(obj, R"({"a":{"b":{}}})");
   EXPECT_EQ(sp.next(obj, off), JsonSplitter::Result::Truncated);
   EXPECT_EQ(sp.next(obj, off), JsonSplitter::Result::End);
+}
+
+// The scan passes over the byte after a backslash in a string, whatever it
+// is: also when the backslash is the last byte a read gave, and the quote
+// or brace it escapes comes in the next read.
+TEST(JsonSplitter, EscapesSplitAcrossReads) {
+  const std::vector<std::string> objects = {R"({"m":"a\"{b\\"})", R"({"n":"\\"})", R"({"o":"}\"}{\\\""})",
+                                            R"({"p":{"q":"\\}"}})"};
+  std::string text = "[";
+  for (const auto& o : objects) text += o + ",";
+  text += "]";
+  for (std::size_t step = 1; step <= 9; ++step) {
+    DribbleSource src(text, step);
+    JsonSplitter sp(src);
+    std::string_view obj;
+    std::uint64_t off = 0;
+    for (const auto& want : objects) {
+      ASSERT_EQ(sp.next(obj, off), JsonSplitter::Result::Object) << "step " << step << ", " << want;
+      EXPECT_EQ(obj, want) << "step " << step;
+      EXPECT_EQ(text.substr(off, want.size()), want);
+    }
+    EXPECT_EQ(sp.next(obj, off), JsonSplitter::Result::End) << "step " << step;
+  }
 }
 
 TEST(JsonSplitter, OverlongElementsAreSkipped) {
