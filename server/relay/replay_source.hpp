@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "server/relay/channel.hpp"
+#include "server/relay/spectator_message.hpp"
 
 namespace mc::relay {
 
@@ -19,8 +20,9 @@ class ReplaySource {
   virtual ~ReplaySource() = default;
   // The private channel the session subscribes to.
   virtual std::shared_ptr<Channel> channel() = 0;
-  // A text message from the spectator (JSON); called on the session's strand.
-  virtual void on_client_message(std::string_view text) = 0;
+  // A message from the spectator, read once by the session (a replay's
+  // controls: type "replay"); called on the session's strand.
+  virtual void on_message(const SpectatorMessage& message) = 0;
   // The spectator left: stop producing.
   virtual void close() = 0;
 };

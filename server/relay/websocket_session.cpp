@@ -261,12 +261,12 @@ bool WebSocketSession::consume(std::string_view bytes) {
 }
 
 void WebSocketSession::on_text(std::string_view text) {
-  // A recording's replay gets every message of its spectator.
-  if (replay_ && !shifted_) return replay_->on_client_message(text);
-  if (!timeshift_factory_) return;  // live spectators are otherwise read-only
+  const bool replaying = replay_ && !shifted_;
+  if (!replaying && !timeshift_factory_) return;  // live spectators are otherwise read-only
   const auto m = read_spectator_message(text);  // spectator_message.hpp (fuzzed)
   if (!m) return;
-  if (m->type == "replay" && shifted_) return replay_->on_client_message(text);
+  // A recording's replay gets every message of its spectator.
+  if (replaying || (m->type == "replay" && shifted_)) return replay_->on_message(*m);
   if (m->type != "timeshift" || m->action.empty()) return;
   on_timeshift(m->action, m->time ? &*m->time : nullptr);
 }
@@ -286,8 +286,7 @@ void WebSocketSession::on_timeshift(std::string_view action, const double* time)
       switch_to(replay_->channel(), Message::control(R"({"type":"timeshift","mode":"replay"})"));
       log_event("timeshift", live_->name());
     }
-    replay_->on_client_message(
-        nlohmann::json{{"type", "replay"}, {"action", "seek"}, {"time", *time}}.dump());
+    replay_->on_message(SpectatorMessage{"replay", "seek", *time, std::nullopt});
   } else if (action == "live" && shifted_) {
     replay_->close();
     replay_.reset();

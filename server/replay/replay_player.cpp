@@ -156,18 +156,9 @@ void ReplayPlayer::seek(int time) {
   channel_->publish_frame(encoder().encode(f, key), key);
 }
 
-void ReplayPlayer::on_client_message(std::string_view text) {
-  if (closed_) return;
-  const auto j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-  // Every field is checked for its type before it is read: json::value()
-  // throws on a "type" that is not a string ({"type":1200}), and an
-  // exception here would end the server (found by replay_spectator_messages_fuzz).
-  if (!j.is_object()) return;
-  const auto type = j.find("type");
-  const auto act = j.find("action");
-  if (type == j.end() || !type->is_string() || *type != "replay" || act == j.end() || !act->is_string())
-    return;  // not for us: spectators' other messages are ignored
-  const std::string action = act->get<std::string>();
+void ReplayPlayer::on_message(const relay::SpectatorMessage& message) {
+  if (closed_ || message.type != "replay") return;  // not for us: spectators' other messages are ignored
+  const std::string& action = message.action;
   const bool was_paused = paused_;
   if (action == "pause") {
     paused_ = true;
@@ -175,12 +166,12 @@ void ReplayPlayer::on_client_message(std::string_view text) {
     paused_ = false;
   } else if (action == "toggle") {
     paused_ = !paused_;
-  } else if (action == "seek" && j.contains("time") && j["time"].is_number()) {
+  } else if (action == "seek" && message.time) {
     // Clamped before the conversion: a double past int's range (1e300) is
     // undefined behaviour when cast; NaN cannot come from JSON.
-    seek(static_cast<int>(std::clamp(j["time"].get<double>(), -1e9, 1e9)));
-  } else if (action == "speed" && j.contains("speed") && j["speed"].is_number()) {
-    speed_ = std::clamp(j["speed"].get<double>(), 0.25, 8.0);
+    seek(static_cast<int>(std::clamp(*message.time, -1e9, 1e9)));
+  } else if (action == "speed" && message.speed) {
+    speed_ = std::clamp(*message.speed, 0.25, 8.0);
   } else if (action == "next_goal") {
     for (const auto& g : summary_.goals)
       if (g.time - kGoalLeadCycles > time_) {

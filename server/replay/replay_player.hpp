@@ -62,7 +62,7 @@ class ReplayPlayer : public relay::ReplaySource, public std::enable_shared_from_
   void start();
 
   std::shared_ptr<relay::Channel> channel() override { return channel_; }
-  void on_client_message(std::string_view text) override;
+  void on_message(const relay::SpectatorMessage& message) override;
   void close() override;
 
   // For tests and status: the simulation time of the last frame sent.

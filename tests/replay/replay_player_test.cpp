@@ -3,6 +3,7 @@
 // thread ends the server), and out-of-range numbers are clamped. The inputs
 // are those replay_spectator_messages_fuzz found.
 #include "server/replay/replay_player.hpp"
+#include "server/relay/spectator_message.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,12 @@ namespace mc::replay {
 namespace {
 
 const std::string kGolden = std::string(MATCHCAST_SOURCE_DIR) + "/tests/proto/golden/recording_v3.mcrec";
+
+// What the session does with a spectator's text: read it once, then hand
+// what it says to the replay.
+void send(ReplayPlayer& p, std::string_view text) {
+  if (const auto m = relay::read_spectator_message(text)) p.on_message(*m);
+}
 
 std::shared_ptr<ReplayPlayer> player(boost::asio::io_context& ioc) {
   auto reader = std::make_unique<record::RecordingReader>();
@@ -32,10 +39,10 @@ TEST(ReplayPlayer, MessagesOfTheWrongShapeAreIgnoredNotThrownOn) {
   auto p = player(ioc);
   for (const char* text : {R"({"type":1200})", R"({"type":null,"action":"seek"})", R"({"type":"replay","action":7})",
                            R"({"type":"replay"})", R"([1,2])", R"("replay")", "", "{", R"({"type":"replay","action":"seek","time":"x"})"}) {
-    EXPECT_NO_THROW(p->on_client_message(text)) << text;
+    EXPECT_NO_THROW(send(*p, text)) << text;
   }
   EXPECT_FALSE(p->paused());
-  p->on_client_message(R"({"type":"replay","action":"pause"})");
+  send(*p, R"({"type":"replay","action":"pause"})");
   EXPECT_TRUE(p->paused());
   p->close();
   ioc.poll();
@@ -44,10 +51,10 @@ TEST(ReplayPlayer, MessagesOfTheWrongShapeAreIgnoredNotThrownOn) {
 TEST(ReplayPlayer, ASeekFarOutsideTheRecordingIsClampedToIt) {
   boost::asio::io_context ioc;
   auto p = player(ioc);
-  p->on_client_message(R"({"type":"replay","action":"seek","time":1e300})");
+  send(*p, R"({"type":"replay","action":"seek","time":1e300})");
   const int last = p->time();
   EXPECT_GT(last, 0);
-  p->on_client_message(R"({"type":"replay","action":"seek","time":-1e300})");
+  send(*p, R"({"type":"replay","action":"seek","time":-1e300})");
   EXPECT_LT(p->time(), last);
   p->close();
   ioc.poll();
@@ -72,8 +79,8 @@ TEST(ReplayPlayer, ItsStatusIsTheJsonASpectatorsSeekBarReads) {
   auto collector = std::make_shared<relay::testing::ChannelCollector>();
   p->channel()->join(collector);
   p->start();
-  p->on_client_message(R"({"type":"replay","action":"speed","speed":0.5})");
-  p->on_client_message(R"({"type":"replay","action":"pause"})");
+  send(*p, R"({"type":"replay","action":"speed","speed":0.5})");
+  send(*p, R"({"type":"replay","action":"pause"})");
   p->close();
   ioc.poll();
   std::vector<nlohmann::json> statuses;

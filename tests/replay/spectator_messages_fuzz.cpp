@@ -70,8 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::size_t end = input.find('\n', pos);
     if (end == std::string_view::npos) end = input.size();
     const std::string_view text = input.substr(pos, end - pos);
-    (void)mc::relay::read_spectator_message(text);
-    player->on_client_message(text);
+    if (const auto m = mc::relay::read_spectator_message(text)) player->on_message(*m);
     pos = end + 1;
   }
   ioc.restart();
