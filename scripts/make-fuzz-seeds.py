@@ -45,6 +45,15 @@ def write(folder, name, data):
         f.write(data if isinstance(data, bytes) else data.encode())
 
 
+def clear(folder):
+    """Empties a seed folder for new seeds, but keeps the crashers found by
+    fuzzing (crash-*): they are regression inputs, not seeds from real data."""
+    if os.path.isdir(folder):
+        for name in os.listdir(folder):
+            if not name.startswith('crash-'):
+                os.remove(os.path.join(folder, name))
+
+
 def wrap(kind, number, payload):
     """server/nats/envelope.hpp: u8 kind | u64 number LE | payload."""
     return kind.encode() + struct.pack('<Q', number) + payload
@@ -91,11 +100,13 @@ def main():
             kinds.setdefault(kind, t)
         deltas = frames[1:4]
 
-        # 2. One second recorded, closed with its index; one killed mid-recording.
+        # 2. Half a second recorded (ten frames: a seed the fuzzer mutates
+        # must stay small, as every input is read, scanned and decoded
+        # whole), closed with its index; one killed mid-recording.
         rec = os.path.join(tmp, 'rec')
         os.makedirs(rec)
         p, port = start(server, '--record-dir', rec, '--record-max-bytes', '0', '--record-max-age', '0')
-        time.sleep(1.2)
+        time.sleep(0.6)
         p.send_signal(signal.SIGTERM)
         p.wait(10)
         closed = open(os.path.join(rec, sorted(os.listdir(rec))[0]), 'rb').read()
@@ -113,7 +124,7 @@ def main():
 
         # proto: frames, JSON messages, recording records.
         d = os.path.join(ROOT, 'tests/proto/fuzz/seeds/proto_frame_decoder_fuzz')
-        shutil.rmtree(d, ignore_errors=True)
+        clear(d)
         for i, k in enumerate(keys[:1]):
             write(d, f'keyframe-{i}', k)
         for i, f in enumerate(deltas):
@@ -127,7 +138,7 @@ def main():
 
         # replay: the recording reader (first byte: what the rest is).
         d = os.path.join(ROOT, 'tests/replay/fuzz/seeds/recording_reader')
-        shutil.rmtree(d, ignore_errors=True)
+        clear(d)
         write(d, '0-closed', b'\x00' + closed)
         write(d, '0-killed', b'\x00' + killed)
         write(d, '1-chunks', b'\x01' + closed[len(prefix):index_at])
@@ -136,7 +147,7 @@ def main():
 
         # replay: what spectators send (the page's and the viewer's messages).
         d = os.path.join(ROOT, 'tests/replay/fuzz/seeds/spectator_messages')
-        shutil.rmtree(d, ignore_errors=True)
+        clear(d)
         write(d, 'replay-controls', '\n'.join([
             '{"type":"replay","action":"pause"}', '{"type":"replay","action":"play"}',
             '{"type":"replay","action":"seek","time":12}', '{"type":"replay","action":"speed","speed":2}',
@@ -147,7 +158,7 @@ def main():
 
         # relay: requests as they reach the router.
         d = os.path.join(ROOT, 'tests/relay/fuzz/seeds/http_request')
-        shutil.rmtree(d, ignore_errors=True)
+        clear(d)
         write(d, 'upgrade', upgrade)
         write(d, 'upgrade-replay', upgrade.replace(b'GET /ws ', b'GET /ws?recording=live-20261122-030423.mcrec '))
         write(d, 'browser-page', 'GET / HTTP/1.1\r\nHost: 127.0.0.1:8080\r\nConnection: keep-alive\r\n'
@@ -161,7 +172,7 @@ def main():
 
         # nats: the envelopes an origin publishes for these messages.
         d = os.path.join(ROOT, 'tests/nats/fuzz/seeds/envelope')
-        shutil.rmtree(d, ignore_errors=True)
+        clear(d)
         write(d, 'hello', wrap('H', 1, hello))
         if keys:
             write(d, 'keyframe', wrap('K', 2, keys[0]))
@@ -173,7 +184,7 @@ def main():
 
         # relay: what a browser's WebSocket sends (masked frames).
         d = os.path.join(ROOT, 'tests/relay/fuzz/seeds/ws_inbound')
-        shutil.rmtree(d, ignore_errors=True)
+        clear(d)
         write(d, 'timeshift', b'\x07' + WsClient.text_frame('{"type":"timeshift","action":"seek","time":1200}'))
         write(d, 'replay', b'\x10' + WsClient.text_frame('{"type":"replay","action":"speed","speed":2}') +
               bytes([0x89, 0x80]) + os.urandom(4) + bytes([0x88, 0x82]) + b'\x00\x00\x00\x00\x03\xe8')

@@ -28,7 +28,7 @@ namespace rec = mc::proto::rec;
 struct Fixture {
   int fd = -1;
   std::string path;
-  std::string real;     // a real recording (the seed 0-closed: one second of the bundled game)
+  std::string real;     // a real recording (the seed 0-closed: half a second of the bundled game)
   std::string prefix;   // its file header and hello record
   std::string chunks;   // prefix + its chunk records, without index and trailer
   // The real file's hello, parsed once: every input's reader gets it, and
