@@ -15,6 +15,8 @@ constexpr int kGoalLeadCycles = 50;
 // Pressing "previous goal" within this many cycles after a goal's lead-in
 // goes to the goal before it, as a video player's "previous" does.
 constexpr int kPrevGoalSlack = 30;
+// At most one seek is done in this much time (see request_seek()).
+constexpr std::chrono::milliseconds kSeekWindow{50};
 
 std::uint64_t unix_ms() {
   using namespace std::chrono;
@@ -55,6 +57,7 @@ ReplayPlayer::ReplayPlayer(boost::asio::any_io_executor executor, std::string na
                            std::unique_ptr<record::RecordingReader> reader, RecordingSummary summary,
                            bool follow)
     : timer_(executor),
+      seek_timer_(executor),
       name_(std::move(name)),
       name_json_(nlohmann::json(name_).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)),
       reader_(std::move(reader)),
@@ -91,6 +94,12 @@ void ReplayPlayer::schedule() {
 
 void ReplayPlayer::on_tick(boost::system::error_code ec) {
   if (ec || closed_ || paused_) return;
+  if (pending_seek_) {
+    // The jump is this tick's picture (the seek timer then finds it done).
+    seek_pending();
+    publish_status();
+    return schedule();
+  }
   if (!send_next()) {
     if (follow_) {
       // Caught up with a recording still being written: wait for its next
@@ -135,15 +144,47 @@ bool ReplayPlayer::send_next() {
   return true;
 }
 
+void ReplayPlayer::request_seek(int time) {
+  const auto now = std::chrono::steady_clock::now();
+  if (!pending_seek_ && now - last_seek_ >= kSeekWindow) {
+    last_seek_ = now;
+    return seek(time);
+  }
+  // Shown at once as the position (the status, the next goal from here);
+  // the picture follows when the window ends or at the next tick.
+  time_ = clamp_time(time);
+  if (!pending_seek_) {
+    seek_timer_.expires_at(last_seek_ + kSeekWindow);
+    seek_timer_.async_wait([self = shared_from_this()](boost::system::error_code ec) { self->on_seek_timer(ec); });
+  }
+  pending_seek_ = time_;
+}
+
+void ReplayPlayer::on_seek_timer(boost::system::error_code ec) {
+  if (ec || closed_ || !pending_seek_) return;
+  seek_pending();
+  publish_status();
+}
+
+void ReplayPlayer::seek_pending() {
+  const int time = *pending_seek_;
+  pending_seek_.reset();
+  last_seek_ = std::chrono::steady_clock::now();
+  seek(time);
+}
+
+int ReplayPlayer::clamp_time(int time) {
+  std::string error;
+  // A recording still growing (follow) may reach past the summary: its last chunk is reachable.
+  if (follow_ && reader_->refresh(error))
+    return std::clamp(time, summary_.first_time, std::max(summary_.last_time, reader_->last_chunk_time()));
+  return std::clamp(time, summary_.first_time, summary_.last_time);
+}
+
 void ReplayPlayer::seek(int time) {
   PoseFrame f;
   std::string error;
-  if (follow_ && reader_->refresh(error)) {
-    // The recording has grown since the summary: its last chunk is reachable.
-    time = std::clamp(time, summary_.first_time, std::max(summary_.last_time, reader_->last_chunk_time()));
-  } else {
-    time = std::clamp(time, summary_.first_time, summary_.last_time);
-  }
+  time = clamp_time(time);
   if (!reader_->seek(time, f, error)) return;
   // seek() decoded the frame at `time`: send it as the new picture. A jump
   // breaks the delta chain, so it goes out as a keyframe.
@@ -169,19 +210,19 @@ void ReplayPlayer::on_message(const relay::SpectatorMessage& message) {
   } else if (action == "seek" && message.time) {
     // Clamped before the conversion: a double past int's range (1e300) is
     // undefined behaviour when cast; NaN cannot come from JSON.
-    seek(static_cast<int>(std::clamp(*message.time, -1e9, 1e9)));
+    request_seek(static_cast<int>(std::clamp(*message.time, -1e9, 1e9)));
   } else if (action == "speed" && message.speed) {
     speed_ = std::clamp(*message.speed, 0.25, 8.0);
   } else if (action == "next_goal") {
     for (const auto& g : summary_.goals)
       if (g.time - kGoalLeadCycles > time_) {
-        seek(g.time - kGoalLeadCycles);
+        request_seek(g.time - kGoalLeadCycles);
         break;
       }
   } else if (action == "prev_goal") {
     for (auto it = summary_.goals.rbegin(); it != summary_.goals.rend(); ++it)
       if (it->time - kGoalLeadCycles + kPrevGoalSlack < time_) {
-        seek(it->time - kGoalLeadCycles);
+        request_seek(it->time - kGoalLeadCycles);
         break;
       }
   } else {
@@ -234,6 +275,7 @@ void ReplayPlayer::publish_status() {
 void ReplayPlayer::close() {
   closed_ = true;
   timer_.cancel();
+  seek_timer_.cancel();
 }
 
 }  // namespace mc::replay

@@ -18,7 +18,9 @@
 
 #include <boost/asio/any_io_executor.hpp>
 #include <boost/asio/steady_timer.hpp>
+#include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,7 +67,8 @@ class ReplayPlayer : public relay::ReplaySource, public std::enable_shared_from_
   void on_message(const relay::SpectatorMessage& message) override;
   void close() override;
 
-  // For tests and status: the simulation time of the last frame sent.
+  // For tests and status: the simulation time of the last frame sent, or
+  // of the seek about to be done (see request_seek()).
   int time() const { return time_; }
   bool paused() const { return paused_; }
   double speed() const { return speed_; }
@@ -74,11 +77,24 @@ class ReplayPlayer : public relay::ReplaySource, public std::enable_shared_from_
   void schedule();
   void on_tick(boost::system::error_code ec);
   bool send_next();
+  // A spectator's jump. Scrubbing the seek bar sends a seek per mouse move,
+  // and each costs a decode from the keyframe before it (up to 220 frames,
+  // a few ms): the first seek of a 50 ms window is done at once, later ones
+  // only set the target, which is done when the window ends. So a drag is
+  // followed at 20 pictures a second, and a flood of seeks costs at most
+  // 20 seeks a second.
+  void request_seek(int time);
+  void on_seek_timer(boost::system::error_code ec);
+  void seek_pending();
+  int clamp_time(int time);
   void seek(int time);
   void publish_status();
   proto::FrameEncoder& encoder();
 
   boost::asio::steady_timer timer_;
+  boost::asio::steady_timer seek_timer_;  // ends the window of request_seek()
+  std::chrono::steady_clock::time_point last_seek_{};
+  std::optional<int> pending_seek_;
   std::string name_;
   std::string name_json_;  // name_ as a JSON string, for the status
   std::unique_ptr<record::RecordingReader> reader_;

@@ -9,6 +9,7 @@
 
 #include <boost/asio/io_context.hpp>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "tests/relay/channel_collector.hpp"
 
@@ -56,6 +57,49 @@ TEST(ReplayPlayer, ASeekFarOutsideTheRecordingIsClampedToIt) {
   EXPECT_GT(last, 0);
   send(*p, R"({"type":"replay","action":"seek","time":-1e300})");
   EXPECT_LT(p->time(), last);
+  p->close();
+  ioc.poll();
+}
+
+// Scrubbing the seek bar sends a seek per mouse move, and each seek decodes
+// from a keyframe: the player does the first of a 50 ms window at once and
+// only the last of the rest, when the window ends. A flood of seeks costs
+// two seeks, not a hundred, and ends where the spectator let go.
+TEST(ReplayPlayer, AFloodOfSeeksIsDoneAsTheFirstAndTheLast) {
+  boost::asio::io_context ioc;
+  auto reader = std::make_unique<record::RecordingReader>();
+  std::string error;
+  ASSERT_TRUE(reader->open(kGolden, error)) << error;
+  RecordingSummary summary;
+  ASSERT_TRUE(summarize(*reader, summary, error)) << error;
+  ASSERT_GT(summary.last_time - summary.first_time, 2);
+  auto p = std::make_shared<ReplayPlayer>(ioc.get_executor(), "golden.mcrec", std::move(reader), summary);
+  auto collector = std::make_shared<relay::testing::ChannelCollector>();
+  p->channel()->join(collector);
+  p->start();
+  send(*p, R"({"type":"replay","action":"pause"})");
+  const auto frames = [&] {
+    std::size_t n = 0;
+    for (const auto& m : collector->snapshot()) n += m.binary() ? 1 : 0;
+    return n;
+  };
+  const std::size_t before = frames();
+  const int target = summary.first_time + 1;
+  for (int i = 0; i < 100; ++i) {
+    const int t = i == 99 ? target : summary.last_time - i % 3;
+    send(*p, R"({"type":"replay","action":"seek","time":)" + std::to_string(t) + "}");
+  }
+  EXPECT_EQ(frames(), before + 1);  // the first seek's picture, at once
+  EXPECT_EQ(p->time(), target);     // the position is already the last one asked for
+  ioc.run_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(frames(), before + 2);  // and the last seek's picture, once
+  EXPECT_EQ(p->time(), target);
+  EXPECT_TRUE(p->paused());
+  // After a quiet window a seek is done at once again (run_for returned
+  // when the paused player had nothing left to wait for).
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  send(*p, R"({"type":"replay","action":"seek","time":)" + std::to_string(summary.last_time) + "}");
+  EXPECT_EQ(frames(), before + 3);
   p->close();
   ioc.poll();
 }
