@@ -64,6 +64,7 @@ bool RecordingReader::open(const std::string& path, std::string& error,
   recovered_ = false;
   ignored_tail_ = 0;
   skipped_frames_ = 0;
+  decoded_frames_ = 0;
   scan_end_ = 0;
   finished_ = false;
   rewind();
@@ -242,6 +243,7 @@ void RecordingReader::rewind() {
   chunk_ = 0;
   chunk_loaded_ = false;
   entry_ = 0;
+  at_.reset();
 }
 
 bool RecordingReader::next(PoseFrame& out, std::string& error, std::vector<std::string>* controls) {
@@ -250,6 +252,12 @@ bool RecordingReader::next(PoseFrame& out, std::string& error, std::vector<std::
     error = "recording is not open";
     return false;
   }
+  at_.reset();
+  const auto got = [&] {
+    ++decoded_frames_;
+    at_.emplace(out.time, out.stoppage);
+    return true;
+  };
   for (;;) {
     if (!chunk_loaded_ || entry_ >= entries_.size()) {
       const std::size_t next_chunk = chunk_loaded_ ? chunk_ + 1 : chunk_;
@@ -263,7 +271,7 @@ bool RecordingReader::next(PoseFrame& out, std::string& error, std::vector<std::
       continue;
     }
     if (e.kind == rec::ChunkEntry::Kind::StreamFrame) {
-      if (stream_ && stream_->next(out, error)) return true;
+      if (stream_ && stream_->next(out, error)) return got();
       // The rest of this chunk's stream cannot be found: skip it, and wait
       // for a keyframe, as a live client would.
       stream_.reset();
@@ -272,7 +280,7 @@ bool RecordingReader::next(PoseFrame& out, std::string& error, std::vector<std::
       error.clear();
       continue;
     }
-    if (decoder().decode(e.bytes, out, error)) return true;
+    if (decoder().decode(e.bytes, out, error)) return got();
     // A frame that does not decode (a delta whose base was in a damaged
     // chunk): skip to the next keyframe, as a live client would.
     ++skipped_frames_;
@@ -285,8 +293,14 @@ bool RecordingReader::seek(int time, PoseFrame& out, std::string& error, int sto
     error = path_ + ": the recording holds no frames";
     return false;
   }
-  decoder().reset();
-  if (!load_chunk(rec::find_chunk(chunks_, time, stoppage), error)) return false;
+  const std::size_t key = rec::find_chunk(chunks_, time, stoppage);
+  const bool ahead = at_ && chunk_loaded_ && key <= chunk_ &&
+                     (at_->first < time || (at_->first == time && at_->second < stoppage));
+  if (!ahead) {
+    at_.reset();
+    decoder().reset();
+    if (!load_chunk(key, error)) return false;
+  }
   while (next(out, error)) {
     if (out.time > time || (out.time == time && out.stoppage >= stoppage)) return true;
   }

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "proto/frame_codec.hpp"
@@ -62,11 +63,16 @@ class RecordingReader {
   std::uint64_t ignored_tail_bytes() const { return ignored_tail_; }
   // Frames next() skipped because they did not decode (waiting for a keyframe).
   std::uint64_t skipped_frames() const { return skipped_frames_; }
+  // Frames decoded since open(), by next() and seek() (a seek's cost).
+  std::uint64_t decoded_frames() const { return decoded_frames_; }
 
   // Positions at the first frame at or after simulation time `time`
   // (`stoppage` for the shows repeated during stoppages) and decodes it
   // into `out`. False + error when the time is after the last frame or the
-  // data is damaged. next() continues from there.
+  // data is damaged. next() continues from there. A seek forward with no
+  // keyframe chunk between the cursor and the time goes on decoding from
+  // the cursor (a replay's skip ahead, a spectator's scrub to the right);
+  // any other decodes from the keyframe before the time.
   bool seek(int time, PoseFrame& out, std::string& error, int stoppage = 0);
   // The next frame in stream order, and the control messages (JSON text)
   // recorded between the previous frame and this one. False at the end
@@ -105,6 +111,7 @@ class RecordingReader {
   bool recovered_ = false;
   std::uint64_t ignored_tail_ = 0;
   std::uint64_t skipped_frames_ = 0;
+  std::uint64_t decoded_frames_ = 0;
   std::uint8_t major_ = proto::rec::kFormatMajor;  // the file's format
   std::uint64_t data_start_ = 0;  // offset of the first chunk record
   std::uint64_t scan_end_ = 0;    // recovered files: where the last scan stopped
@@ -119,6 +126,9 @@ class RecordingReader {
   // Format 3: the loaded chunk's frame stream (a view into chunk_bytes_);
   // empty after a frame of it failed, since the rest cannot be found then.
   std::optional<proto::FrameStreamDecoder> stream_;
+  // (time, stoppage) of the frame next() returned last, while the cursor
+  // goes on from it: where a seek forward can go on from.
+  std::optional<std::pair<int, int>> at_;
 };
 
 }  // namespace mc::record

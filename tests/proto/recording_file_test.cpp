@@ -194,6 +194,43 @@ TEST_F(RecordingFile, SeeksToAnySimulationTime) {
   EXPECT_NE(error.find("after the end"), std::string::npos) << error;
 }
 
+// A seek forward with no keyframe on the way goes on from where the reader
+// is, and finds what a seek from the keyframe finds: every pair of times,
+// both ways, against a reader that seeks afresh.
+TEST_F(RecordingFile, ASeekForwardGoesOnFromWhereItIs) {
+  const std::string path = write(200, true, WriterOptions{.max_chunk_frames = 20, .sync = false, .keyframe_interval = 60});
+  std::string error;
+  PoseFrame f, g;
+  for (int a : {0, 5, 20, 29, 31, 44, 70}) {
+    for (int b : {0, 6, 21, 30, 45, 62, 99}) {
+      RecordingReader r, fresh;
+      ASSERT_TRUE(r.open(path, error)) << error;
+      ASSERT_TRUE(fresh.open(path, error)) << error;
+      ASSERT_TRUE(r.seek(a, f, error)) << a << ": " << error;
+      const std::uint64_t before = r.decoded_frames();
+      ASSERT_TRUE(r.seek(b, f, error)) << a << " -> " << b << ": " << error;
+      ASSERT_TRUE(fresh.seek(b, g, error)) << b << ": " << error;
+      EXPECT_EQ(f.seq, g.seq) << a << " -> " << b;
+      EXPECT_EQ(f.time, b);
+      ASSERT_EQ(f.players.size(), g.players.size());
+      for (std::size_t i = 0; i < f.players.size(); ++i) {
+        EXPECT_EQ(f.players[i].x, g.players[i].x) << a << " -> " << b;
+        EXPECT_EQ(f.players[i].angles, g.players[i].angles) << a << " -> " << b;
+      }
+      // Frames 2t and 2t+1 are at time t; keyframes at frames 0, 60, 120, 180.
+      const std::uint64_t cost = r.decoded_frames() - before;
+      if (b > a && b * 2 / 60 == a * 2 / 60) {
+        EXPECT_EQ(cost, static_cast<std::uint64_t>(2 * (b - a))) << a << " -> " << b;
+      } else {
+        EXPECT_EQ(cost, fresh.decoded_frames()) << a << " -> " << b;
+      }
+      ASSERT_TRUE(r.next(f, error));
+      ASSERT_TRUE(fresh.next(g, error));
+      EXPECT_EQ(f.seq, g.seq);
+    }
+  }
+}
+
 TEST_F(RecordingFile, UnclosedFileIsRecoveredFromItsRecords) {
   const std::string path = write(95, false);
   RecordingReader r;
