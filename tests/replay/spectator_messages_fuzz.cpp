@@ -14,6 +14,7 @@
 #include <iterator>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "server/record/recording_reader.hpp"
 #include "server/relay/spectator_message.hpp"
@@ -55,6 +56,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // so a crashing input replays alone. Odd sizes use the follow (time
   // shift) mode.
   const bool follow = (size & 1) != 0;
+  // The session's reading first: an input none of whose lines reads as a
+  // message gives the player nothing to do, and making one (a reader, a
+  // channel) to start and close it would be most of such an input's time.
+  const std::string_view input(reinterpret_cast<const char*>(data), size);
+  std::vector<mc::relay::SpectatorMessage> messages;
+  std::size_t pos = 0;
+  for (int n = 0; n < 8 && pos <= input.size(); ++n) {
+    std::size_t end = input.find('\n', pos);
+    if (end == std::string_view::npos) end = input.size();
+    if (auto m = mc::relay::read_spectator_message(input.substr(pos, end - pos))) messages.push_back(std::move(*m));
+    pos = end + 1;
+  }
+  if (messages.empty()) return 0;
   std::shared_ptr<mc::replay::ReplayPlayer> player;
   {
     auto reader = std::make_unique<mc::record::RecordingReader>();
@@ -64,15 +78,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                         fx.summary, follow);
     player->start();
   }
-  const std::string_view input(reinterpret_cast<const char*>(data), size);
-  std::size_t pos = 0;
-  for (int n = 0; n < 8 && pos <= input.size(); ++n) {
-    std::size_t end = input.find('\n', pos);
-    if (end == std::string_view::npos) end = input.size();
-    const std::string_view text = input.substr(pos, end - pos);
-    if (const auto m = mc::relay::read_spectator_message(text)) player->on_message(*m);
-    pos = end + 1;
-  }
+  for (const auto& m : messages) player->on_message(m);
   ioc.restart();
   ioc.poll();  // ready handlers only: the next frame's timer is 50 ms away at the least
   player->close();
