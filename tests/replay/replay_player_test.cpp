@@ -24,12 +24,18 @@ void send(ReplayPlayer& p, std::string_view text) {
   if (const auto m = relay::read_spectator_message(text)) p.on_message(*m);
 }
 
-std::shared_ptr<ReplayPlayer> player(boost::asio::io_context& ioc) {
+// The golden recording, open, and what it holds.
+std::unique_ptr<record::RecordingReader> golden(RecordingSummary& summary) {
   auto reader = std::make_unique<record::RecordingReader>();
   std::string error;
   EXPECT_TRUE(reader->open(kGolden, error)) << error;
-  RecordingSummary summary;
   EXPECT_TRUE(summarize(*reader, summary, error)) << error;
+  return reader;
+}
+
+std::shared_ptr<ReplayPlayer> player(boost::asio::io_context& ioc) {
+  RecordingSummary summary;
+  auto reader = golden(summary);
   auto p = std::make_shared<ReplayPlayer>(ioc.get_executor(), "golden.mcrec", std::move(reader), summary);
   p->start();
   return p;
@@ -67,11 +73,8 @@ TEST(ReplayPlayer, ASeekFarOutsideTheRecordingIsClampedToIt) {
 // two seeks, not a hundred, and ends where the spectator let go.
 TEST(ReplayPlayer, AFloodOfSeeksIsDoneAsTheFirstAndTheLast) {
   boost::asio::io_context ioc;
-  auto reader = std::make_unique<record::RecordingReader>();
-  std::string error;
-  ASSERT_TRUE(reader->open(kGolden, error)) << error;
   RecordingSummary summary;
-  ASSERT_TRUE(summarize(*reader, summary, error)) << error;
+  auto reader = golden(summary);
   ASSERT_GT(summary.last_time - summary.first_time, 2);
   auto p = std::make_shared<ReplayPlayer>(ioc.get_executor(), "golden.mcrec", std::move(reader), summary);
   auto collector = std::make_shared<relay::testing::ChannelCollector>();
@@ -110,11 +113,8 @@ TEST(ReplayPlayer, ItsStatusIsTheJsonASpectatorsSeekBarReads) {
   // same), with every field a spectator uses. A name that needs escaping
   // stays a string.
   boost::asio::io_context ioc;
-  auto reader = std::make_unique<record::RecordingReader>();
-  std::string error;
-  ASSERT_TRUE(reader->open(kGolden, error)) << error;
   RecordingSummary summary;
-  ASSERT_TRUE(summarize(*reader, summary, error)) << error;
+  auto reader = golden(summary);
   const std::size_t recorded = summary.goals.size();  // the golden game's own
   summary.goals.push_back({summary.first_time + 3, Side::Right});
   summary.goals.push_back({summary.first_time + 5, Side::Left});
