@@ -95,9 +95,14 @@ void ReplayPlayer::schedule() {
 void ReplayPlayer::on_tick(boost::system::error_code ec) {
   if (ec || closed_ || paused_) return;
   if (pending_seek_) {
-    // The jump is this tick's picture (the seek timer then finds it done).
-    seek_pending();
-    publish_status();
+    // The jump is this tick's picture once its window is over (the seek
+    // timer then finds it done); until then the picture holds. Ticks come
+    // up to 160 times a second at speed 8: doing the seek on each would
+    // undo the window.
+    if (std::chrono::steady_clock::now() - last_seek_ >= kSeekWindow) {
+      seek_pending();
+      publish_status();
+    }
     return schedule();
   }
   if (!send_next()) {
@@ -139,9 +144,18 @@ bool ReplayPlayer::send_next() {
   f.seq = seq_++;
   f.server_time_ms = unix_ms();
   time_ = f.time;
-  bool key = false;
-  channel_->publish_frame(encoder().encode(f, key), key);
+  publish(f);
   return true;
+}
+
+// Encoded first, then published: as the arguments of one call, the
+// keyframe flag could be (and with GCC was) read before encode() set it,
+// and every keyframe went out marked as a delta; a slow spectator's skip
+// then never found a keyframe to resume at.
+void ReplayPlayer::publish(const PoseFrame& f) {
+  bool key = false;
+  std::string bytes = encoder().encode(f, key);
+  channel_->publish_frame(std::move(bytes), key);
 }
 
 void ReplayPlayer::request_seek(int time) {
@@ -193,8 +207,7 @@ void ReplayPlayer::seek(int time) {
   time_ = f.time;
   if (follow_ && f.time > summary_.last_time) summary_.note(f);
   encoder().force_keyframe();
-  bool key = false;
-  channel_->publish_frame(encoder().encode(f, key), key);
+  publish(f);
 }
 
 void ReplayPlayer::on_message(const relay::SpectatorMessage& message) {

@@ -77,6 +77,7 @@ class ReplayPlayer : public relay::ReplaySource, public std::enable_shared_from_
   void schedule();
   void on_tick(boost::system::error_code ec);
   bool send_next();
+  void publish(const PoseFrame& f);  // encodes f and sends it on the channel
   // A spectator's jump. Scrubbing the seek bar sends a seek per mouse move,
   // and each costs a decode from the keyframe before it (up to 220 frames,
   // a few ms): the first seek of a 50 ms window is done at once, later ones

@@ -107,6 +107,38 @@ TEST(ReplayPlayer, AFloodOfSeeksIsDoneAsTheFirstAndTheLast) {
   ioc.poll();
 }
 
+// Playing at speed 8 the player ticks every 6 ms: a drag then must still
+// cost at most one seek per 50 ms window (a seek's picture is a keyframe;
+// between seeks the player sends deltas, far fewer than its keyframe
+// interval). It also checks that a replay's keyframes go out marked as
+// keyframes, which a slow spectator's skip needs to resume.
+TEST(ReplayPlayer, ADragWhilePlayingFastIsStillOneSeekPerWindow) {
+  boost::asio::io_context ioc;
+  RecordingSummary summary;
+  auto reader = golden(summary);
+  auto p = std::make_shared<ReplayPlayer>(ioc.get_executor(), "golden.mcrec", std::move(reader), summary);
+  auto collector = std::make_shared<relay::testing::ChannelCollector>();
+  p->channel()->join(collector);
+  p->start();
+  send(*p, R"({"type":"replay","action":"speed","speed":8})");
+  const auto start = std::chrono::steady_clock::now();
+  constexpr int kSeeks = 60;
+  for (int i = 0; i < kSeeks; ++i) {
+    // A seek every 2 ms or more, back and forth over the first cycles.
+    send(*p, R"({"type":"replay","action":"seek","time":)" + std::to_string(summary.first_time + i % 3) + "}");
+    ioc.run_for(std::chrono::milliseconds(2));
+  }
+  const auto elapsed = std::chrono::steady_clock::now() - start;
+  p->close();
+  ioc.poll();
+  std::size_t keyframes = 0;
+  for (const auto& m : collector->snapshot()) keyframes += m.kind == relay::Message::Kind::Keyframe ? 1 : 0;
+  const auto windows = static_cast<std::size_t>(elapsed / std::chrono::milliseconds(50)) + 1;
+  EXPECT_GE(keyframes, 2u);  // the first seek's picture and at least one later one
+  EXPECT_LE(keyframes, windows + 1)
+      << kSeeks << " seeks in " << std::chrono::duration<double>(elapsed).count() << " s";
+}
+
 TEST(ReplayPlayer, ItsStatusIsTheJsonASpectatorsSeekBarReads) {
   // The status is written as text: it must read as the same JSON object a
   // tree would have written (nlohmann's own dump of it is byte for byte the
