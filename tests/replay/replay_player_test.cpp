@@ -33,13 +33,33 @@ std::unique_ptr<record::RecordingReader> golden(RecordingSummary& summary) {
   return reader;
 }
 
-std::shared_ptr<ReplayPlayer> player(boost::asio::io_context& ioc) {
+// A player of the golden recording, started. `summary_out` gets what the
+// recording holds; `watch` everything the player's channel sends.
+std::shared_ptr<ReplayPlayer> player(boost::asio::io_context& ioc, RecordingSummary* summary_out = nullptr,
+                                     std::shared_ptr<relay::testing::ChannelCollector> watch = nullptr) {
   RecordingSummary summary;
   auto reader = golden(summary);
+  if (summary_out) *summary_out = summary;
   auto p = std::make_shared<ReplayPlayer>(ioc.get_executor(), "golden.mcrec", std::move(reader), summary);
+  if (watch) p->channel()->join(watch);
   p->start();
   return p;
 }
+
+// A started player of the golden recording and everything its channel
+// sends; closed at the end.
+class WatchedPlayer : public ::testing::Test {
+ protected:
+  void SetUp() override { p = player(ioc, &summary, collector); }
+  void TearDown() override {
+    p->close();
+    ioc.poll();
+  }
+  boost::asio::io_context ioc;
+  RecordingSummary summary;
+  std::shared_ptr<relay::testing::ChannelCollector> collector = std::make_shared<relay::testing::ChannelCollector>();
+  std::shared_ptr<ReplayPlayer> p;
+};
 
 TEST(ReplayPlayer, MessagesOfTheWrongShapeAreIgnoredNotThrownOn) {
   boost::asio::io_context ioc;
@@ -71,15 +91,8 @@ TEST(ReplayPlayer, ASeekFarOutsideTheRecordingIsClampedToIt) {
 // from a keyframe: the player does the first of a 50 ms window at once and
 // only the last of the rest, when the window ends. A flood of seeks costs
 // two seeks, not a hundred, and ends where the spectator let go.
-TEST(ReplayPlayer, AFloodOfSeeksIsDoneAsTheFirstAndTheLast) {
-  boost::asio::io_context ioc;
-  RecordingSummary summary;
-  auto reader = golden(summary);
+TEST_F(WatchedPlayer, AFloodOfSeeksIsDoneAsTheFirstAndTheLast) {
   ASSERT_GT(summary.last_time - summary.first_time, 2);
-  auto p = std::make_shared<ReplayPlayer>(ioc.get_executor(), "golden.mcrec", std::move(reader), summary);
-  auto collector = std::make_shared<relay::testing::ChannelCollector>();
-  p->channel()->join(collector);
-  p->start();
   send(*p, R"({"type":"replay","action":"pause"})");
   const auto frames = [&] {
     std::size_t n = 0;
@@ -103,8 +116,6 @@ TEST(ReplayPlayer, AFloodOfSeeksIsDoneAsTheFirstAndTheLast) {
   std::this_thread::sleep_for(std::chrono::milliseconds(60));
   send(*p, R"({"type":"replay","action":"seek","time":)" + std::to_string(summary.last_time) + "}");
   EXPECT_EQ(frames(), before + 3);
-  p->close();
-  ioc.poll();
 }
 
 // Playing at speed 8 the player ticks every 6 ms: a drag then must still
@@ -112,14 +123,7 @@ TEST(ReplayPlayer, AFloodOfSeeksIsDoneAsTheFirstAndTheLast) {
 // between seeks the player sends deltas, far fewer than its keyframe
 // interval). It also checks that a replay's keyframes go out marked as
 // keyframes, which a slow spectator's skip needs to resume.
-TEST(ReplayPlayer, ADragWhilePlayingFastIsStillOneSeekPerWindow) {
-  boost::asio::io_context ioc;
-  RecordingSummary summary;
-  auto reader = golden(summary);
-  auto p = std::make_shared<ReplayPlayer>(ioc.get_executor(), "golden.mcrec", std::move(reader), summary);
-  auto collector = std::make_shared<relay::testing::ChannelCollector>();
-  p->channel()->join(collector);
-  p->start();
+TEST_F(WatchedPlayer, ADragWhilePlayingFastIsStillOneSeekPerWindow) {
   send(*p, R"({"type":"replay","action":"speed","speed":8})");
   const auto start = std::chrono::steady_clock::now();
   constexpr int kSeeks = 60;
@@ -129,8 +133,7 @@ TEST(ReplayPlayer, ADragWhilePlayingFastIsStillOneSeekPerWindow) {
     ioc.run_for(std::chrono::milliseconds(2));
   }
   const auto elapsed = std::chrono::steady_clock::now() - start;
-  p->close();
-  ioc.poll();
+  p->close();  // no more frames from here
   std::size_t keyframes = 0;
   for (const auto& m : collector->snapshot()) keyframes += m.kind == relay::Message::Kind::Keyframe ? 1 : 0;
   const auto windows = static_cast<std::size_t>(elapsed / std::chrono::milliseconds(50)) + 1;
