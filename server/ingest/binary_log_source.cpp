@@ -39,8 +39,9 @@ class BinaryLogSource final : public StateSource {
         }
         if (mode == kMsg) push_msg(body, at);
         else if (mode != kDraw && mode != kBlank && mode != kNoInfo)
-          record_skip(stats_, "record at offset " + std::to_string(at) + ": unknown mode " +
-                                  std::to_string(mode));
+          record_skip(stats_, [&] {
+            return "record at offset " + std::to_string(at) + ": unknown mode " + std::to_string(mode);
+          });
         continue;
       }
       char m[2];
@@ -80,7 +81,7 @@ class BinaryLogSource final : public StateSource {
           if (!read_exact(&c, 1, "playmode")) return finish();
           const int pm = static_cast<unsigned char>(c);
           if (pm < kPlayModeCount) play_mode_ = static_cast<PlayMode>(pm);
-          else record_skip(stats_, "record at offset " + std::to_string(at) + ": bad play mode");
+          else record_skip(stats_, [&] { return "record at offset " + std::to_string(at) + ": bad play mode"; });
           continue;
         }
         case kTeam:
@@ -92,7 +93,7 @@ class BinaryLogSource final : public StateSource {
           PlayerType t;
           decode_player_type(std::string_view(buf_.data(), kPlayerTypeSize), t);
           if (!store_player_type(params_, t))
-            record_skip(stats_, "record at offset " + std::to_string(at) + ": bad player type id");
+            record_skip(stats_, [&] { return "record at offset " + std::to_string(at) + ": bad player type id"; });
           continue;
         }
         case kParam:
@@ -127,7 +128,7 @@ class BinaryLogSource final : public StateSource {
   void push_msg(std::string_view body, std::uint64_t at) {
     SourceEvent ev;
     if (!decode_msginfo(body, ev.message.board, ev.message.text)) {
-      record_skip(stats_, "record at offset " + std::to_string(at) + ": bad msg");
+      record_skip(stats_, [&] { return "record at offset " + std::to_string(at) + ": bad msg"; });
       return;
     }
     ev.message.time = last_time_;
@@ -154,7 +155,7 @@ class BinaryLogSource final : public StateSource {
     return false;
   }
   bool fail(std::uint64_t at, const std::string& why) {
-    record_skip(stats_, "record at offset " + std::to_string(at) + ": " + why);
+    record_skip(stats_, [&] { return "record at offset " + std::to_string(at) + ": " + why; });
     return finish();
   }
   bool finish() {

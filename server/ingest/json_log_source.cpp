@@ -29,7 +29,7 @@ class JsonLogSource final : public StateSource {
         return false;
       }
       if (r == JsonSplitter::Result::TooLong) {
-        record_skip(stats_, "element at offset " + std::to_string(offset) + ": too long, skipped");
+        record_skip(stats_, [&] { return "element at offset " + std::to_string(offset) + ": too long, skipped"; });
         continue;
       }
       RecordKind kind{};
@@ -37,7 +37,7 @@ class JsonLogSource final : public StateSource {
       MessageRecord msg;
       // Decoded into a scratch state: a bad show must not clobber `out`.
       if (!decode_json_record(obj, ctx_, scratch_, msg, kind, err)) {
-        record_skip(stats_, "element at offset " + std::to_string(offset) + ": " + err);
+        record_skip(stats_, [&] { return "element at offset " + std::to_string(offset) + ": " + err; });
         continue;
       }
       if (kind == RecordKind::Show) {

@@ -29,13 +29,7 @@ bool MonitorStream::push(std::string_view datagram, WorldState& out) {
   }
   // The text only where it is kept: a flood of garbage datagrams costs a
   // count, not a string each.
-  if (stats_.errors.size() < IngestStats::kMaxErrors) {
-    std::string text = "datagram ";
-    text.append(std::to_string(n)).append(": ").append(error_);
-    record_skip(stats_, std::move(text));
-  } else {
-    ++stats_.skipped;
-  }
+  record_skip(stats_, [&] { return "datagram " + std::to_string(n) + ": " + error_; });
   return false;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <chrono>
+#include <concepts>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -29,6 +30,14 @@ struct IngestStats {
 
 // Counts a skipped record and keeps its message if fewer than kMaxErrors are kept.
 void record_skip(IngestStats& stats, std::string message);
+// The same, making the message only when it is kept: in a log of many bad
+// records each one past the first kMaxErrors costs a count, not a message
+// built and then dropped.
+template <std::invocable MakeMessage>
+void record_skip(IngestStats& stats, MakeMessage&& make_message) {
+  if (stats.errors.size() < IngestStats::kMaxErrors) record_skip(stats, std::string(make_message()));
+  else ++stats.skipped;
+}
 
 // Something that happened in the stream between two states.
 struct SourceEvent {

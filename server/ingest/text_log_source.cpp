@@ -31,7 +31,7 @@ class TextLogSource final : public StateSource {
         return false;
       }
       if (r == LineReader::Result::TooLong) {
-        record_skip(stats_, "line at offset " + std::to_string(offset) + ": too long, skipped");
+        record_skip(stats_, [&] { return "line at offset " + std::to_string(offset) + ": too long, skipped"; });
         continue;
       }
       if (handle_line(line, offset, out)) return true;
@@ -105,7 +105,7 @@ class TextLogSource final : public StateSource {
       ok = false;
       err = "unknown record";
     }
-    if (!ok) record_skip(stats_, "line at offset " + std::to_string(offset) + ": " + err);
+    if (!ok) record_skip(stats_, [&] { return "line at offset " + std::to_string(offset) + ": " + err; });
     return false;
   }
 

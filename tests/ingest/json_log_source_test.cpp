@@ -115,6 +115,26 @@ TEST(JsonLogSource, BadElementsAreCountedAndSkipped) {
   EXPECT_NE(st.errors[0].find("offset 2"), std::string::npos) << st.errors[0];
 }
 
+// Every bad element is counted; the first kMaxErrors keep their message (and
+// only those are written), the rest are a count.
+TEST(JsonLogSource, ManyBadElementsAreAllCountedAndTheFirstNamed) {
+  const std::size_t bad = IngestStats::kMaxErrors + 50;
+  std::string log = "[\n";
+  std::vector<std::size_t> offsets;
+  for (std::size_t k = 0; k < bad; ++k) {
+    offsets.push_back(log.size());
+    log += "{\"show\":{\"time\":\"x\"}},\n";
+  }
+  log += std::string(kShow) + "\n]";
+  IngestStats st;
+  EXPECT_EQ(read(log, &st).size(), 1u);
+  EXPECT_EQ(st.skipped, bad);
+  ASSERT_EQ(st.errors.size(), IngestStats::kMaxErrors);
+  const std::string last_kept = st.errors.back();
+  EXPECT_EQ(last_kept, "element at offset " + std::to_string(offsets[IngestStats::kMaxErrors - 1]) +
+                           ": bad show record");
+}
+
 TEST(JsonLogSource, RealLogTruncated) {
   const std::string all = testing::decoded(testing::rcg("generated/gen19-json-20261122030023-Alpha_1-vs-Beta_1.rcg.gz"));
   IngestStats st;
