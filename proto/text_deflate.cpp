@@ -38,20 +38,42 @@ std::string deflate_text(std::string_view text) {
   return rc == Z_STREAM_END ? out : std::string();
 }
 
+namespace {
+
+// One raw inflater per thread, reset for each chunk: inflateInit2 and
+// inflateEnd allocate and free ~40 KB (state and window) each time, and a
+// replay loads a chunk a second per spectator, a seek one or two more.
+class Inflater {
+ public:
+  Inflater() { ok_ = inflateInit2(&z_, -15) == Z_OK; }
+  ~Inflater() {
+    if (ok_) inflateEnd(&z_);
+  }
+  Inflater(const Inflater&) = delete;
+  Inflater& operator=(const Inflater&) = delete;
+  // A stream ready for the next chunk, or null if zlib could not start one.
+  z_stream* fresh() { return ok_ && inflateReset(&z_) == Z_OK ? &z_ : nullptr; }
+
+ private:
+  z_stream z_{};
+  bool ok_ = false;
+};
+
+}  // namespace
+
 bool inflate_text(std::string_view in, std::size_t size, std::string& out) {
-  z_stream z{};
-  if (inflateInit2(&z, -15) != Z_OK) return false;
+  thread_local Inflater inflater;
+  z_stream* z = inflater.fresh();
+  if (!z) return false;
   const std::string_view dict = control_dictionary();
-  bool ok = inflateSetDictionary(&z, reinterpret_cast<const Bytef*>(dict.data()), static_cast<uInt>(dict.size())) == Z_OK;
+  bool ok = inflateSetDictionary(z, reinterpret_cast<const Bytef*>(dict.data()), static_cast<uInt>(dict.size())) == Z_OK;
   out.assign(size, '\0');
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
-  z.avail_in = static_cast<uInt>(in.size());
-  z.next_out = reinterpret_cast<Bytef*>(out.data());
-  z.avail_out = static_cast<uInt>(out.size());
+  z->next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
+  z->avail_in = static_cast<uInt>(in.size());
+  z->next_out = reinterpret_cast<Bytef*>(out.data());
+  z->avail_out = static_cast<uInt>(out.size());
   // Exactly `size` bytes, the end of the stream, and no input left over.
-  ok = ok && inflate(&z, Z_FINISH) == Z_STREAM_END && z.total_out == size && z.avail_in == 0;
-  inflateEnd(&z);
-  return ok;
+  return ok && inflate(z, Z_FINISH) == Z_STREAM_END && z->total_out == size && z->avail_in == 0;
 }
 
 }  // namespace mc::proto::rec
