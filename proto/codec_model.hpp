@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "proto/quantizer.hpp"
@@ -119,7 +120,19 @@ inline PartnerTable choose_partners(std::vector<std::uint64_t>& base_cost, std::
 }
 
 struct CodecModel {
-  ModelSet key, delta;
+  // The two context sets (~56 KB), made at the first keyframe, which resets
+  // them anyway: a new decoder or encoder costs no copy of them. (A replay
+  // opens a decoder per reader and an encoder per player; making them was
+  // about a tenth of the two replay fuzzers' time.) Every frame a coder
+  // accepts or writes is, or follows, a keyframe: sets() is there for one
+  // that is asked to walk a delta first, and returns fresh sets.
+  struct Sets {
+    ModelSet key, delta;
+  };
+  Sets& sets() {
+    if (!sets_) sets_.emplace();
+    return *sets_;
+  }
   PartnerTable partners;
   // The angle residuals of the last delta before partner prediction (what
   // the encoder's partner statistics learn from).
@@ -130,8 +143,12 @@ struct CodecModel {
   int history = 0;         // how many of prev, prev2 are valid (0..2)
 
   void reset_for_keyframe() {
-    key.reset();
-    delta.reset();
+    if (sets_) {
+      sets_->key.reset();
+      sets_->delta.reset();
+    } else {
+      sets_.emplace();
+    }
     last = LastResiduals{};
     costs = PredictorCosts{};
     history = 0;
@@ -170,6 +187,9 @@ struct CodecModel {
   }
   // Into [-kHeadingSteps / 2, kHeadingSteps / 2 - 1] = [-182, 181].
   static std::int32_t wrap_signed(std::int64_t v) { return wrap(v + kHeadingSteps / 2) - kHeadingSteps / 2; }
+
+ private:
+  std::optional<Sets> sets_;
 };
 
 // Zero context: the activity of the same value last time, and whether the
@@ -185,7 +205,7 @@ inline int zero_ctx(int act, bool prev_nonzero) { return act * 2 + (prev_nonzero
 // input (decoder only) and stops the walk.
 template <class Io>
 bool walk_keyframe(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q) {
-  ModelSet& s = m.key;
+  ModelSet& s = m.sets().key;
   std::int32_t r = 0;
   // The partner table: per dof a direct bit, then partner (6 bits) and
   // coefficient index (3 bits).
@@ -239,7 +259,7 @@ bool walk_keyframe(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q)
 
 template <class Io>
 bool walk_delta(Io& io, CodecModel& m, const Quantizer& quant, QuantFrame& q, int substep) {
-  ModelSet& s = m.delta;
+  ModelSet& s = m.sets().delta;
   m.costs.substep = substep & 1;
   const QuantFrame& p1 = m.prev;
   const QuantFrame& p0 = m.prev2;
