@@ -1,57 +1,61 @@
 #include "server/relay/spectator_message.hpp"
 
-#include <nlohmann/json.hpp>
+#include <cstdint>
+#include <string_view>
+
+#include "proto/json_sax.hpp"
 
 namespace mc::relay {
 namespace {
 
-// nlohmann's SAX interface over one message. It keeps the four members a
+// RapidJSON's SAX handler over one message. It keeps the four members a
 // spectator's message is read for and passes over everything else, so a
 // message costs no tree: the relay reads every spectator's every message,
 // and a tree was most of that (a map node and a string per member).
 class MessageReader {
  public:
-  using json = nlohmann::json;
+  using SizeType = rapidjson::SizeType;
 
   SpectatorMessage message;
   bool type_is_string = false;
 
-  bool null() { return other(); }
-  bool boolean(bool) { return other(); }
-  bool number_integer(json::number_integer_t v) { return number(static_cast<double>(v)); }
-  bool number_unsigned(json::number_unsigned_t v) { return number(static_cast<double>(v)); }
-  bool number_float(json::number_float_t v, const json::string_t&) { return number(v); }
-  bool string(json::string_t& s) {
+  bool Null() { return other(); }
+  bool Bool(bool) { return other(); }
+  bool Int(int v) { return number(v); }
+  bool Uint(unsigned v) { return number(v); }
+  bool Int64(std::int64_t v) { return number(static_cast<double>(v)); }
+  bool Uint64(std::uint64_t v) { return number(static_cast<double>(v)); }
+  bool Double(double v) { return number(v); }
+  bool String(const char* s, SizeType size, bool) {
     if (depth_ != 1) return top_level_ok();
     if (field_ == Field::Type) {
-      message.type = std::move(s);
+      message.type.assign(s, size);
       type_is_string = true;
     } else if (field_ == Field::Action) {
-      message.action = std::move(s);
+      message.action.assign(s, size);
     } else {
       set_other();
     }
     return true;
   }
-  bool binary(json::binary_t&) { return other(); }  // never from JSON text
-  bool start_object(std::size_t) { return open(); }
-  bool start_array(std::size_t) {
+  bool StartObject() { return open(); }
+  bool StartArray() {
     if (depth_ == 0) return false;  // an array, not an object: stop here
     return open();
   }
-  bool end_object() { return close(); }
-  bool end_array() { return close(); }
-  bool key(json::string_t& k) {
+  bool EndObject(SizeType) { return close(); }
+  bool EndArray(SizeType) { return close(); }
+  bool Key(const char* k, SizeType size, bool) {
     if (depth_ == 1) {
-      field_ = k == "type" ? Field::Type
-             : k == "action" ? Field::Action
-             : k == "time" ? Field::Time
-             : k == "speed" ? Field::Speed
-                            : Field::Other;
+      const std::string_view key(k, size);
+      field_ = key == "type" ? Field::Type
+             : key == "action" ? Field::Action
+             : key == "time" ? Field::Time
+             : key == "speed" ? Field::Speed
+                              : Field::Other;
     }
     return true;
   }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) { return false; }
 
  private:
   enum class Field { Other, Type, Action, Time, Speed };
@@ -96,8 +100,8 @@ class MessageReader {
 
 std::optional<SpectatorMessage> read_spectator_message(std::string_view text) {
   MessageReader reader;
-  // sax_parse is strict: the whole text must be one JSON value.
-  if (!nlohmann::json::sax_parse(text.begin(), text.end(), &reader) || !reader.type_is_string) return std::nullopt;
+  // The whole text must be one JSON object (proto/json_sax.hpp).
+  if (!proto::read_json_sax(text, reader) || !reader.type_is_string) return std::nullopt;
   return std::move(reader.message);
 }
 
