@@ -7,10 +7,10 @@
 // Iterative: a hostile text nested a million deep cannot exhaust the call
 // stack.
 //
-// The handler has Null(), Bool(bool), Number(double), String(string_view),
-// StartObject(), Key(string_view), EndObject(), StartArray(), EndArray(),
-// each returning false to stop; every number reaches it as a double, the
-// way JSON means numbers.
+// The handler is RapidJSON's: Null(), Bool(b), Int(i), Uint(u), Int64(i),
+// Uint64(u), Double(d), RawNumber(..) (never called), String(s, n, copy),
+// StartObject(), Key(s, n, copy), EndObject(n), StartArray(), EndArray(n),
+// each returning false to stop.
 #pragma once
 
 #include <cstddef>
@@ -34,26 +34,25 @@ inline bool has_surrogate(const char* s, std::size_t n) {
   return false;
 }
 
-// RapidJSON's handler interface over H's: numbers as doubles, text as
-// string_view, and a string or key with a surrogate refused.
+// Forwards every event to H; refuses a string or key with a surrogate.
 template <typename H>
-struct Adapter {
+struct NoSurrogates {
   using SizeType = rapidjson::SizeType;
   H& h;
   bool Null() { return h.Null(); }
   bool Bool(bool b) { return h.Bool(b); }
-  bool Int(int v) { return h.Number(v); }
-  bool Uint(unsigned v) { return h.Number(v); }
-  bool Int64(std::int64_t v) { return h.Number(static_cast<double>(v)); }
-  bool Uint64(std::uint64_t v) { return h.Number(static_cast<double>(v)); }
-  bool Double(double v) { return h.Number(v); }
+  bool Int(int v) { return h.Int(v); }
+  bool Uint(unsigned v) { return h.Uint(v); }
+  bool Int64(std::int64_t v) { return h.Int64(v); }
+  bool Uint64(std::uint64_t v) { return h.Uint64(v); }
+  bool Double(double v) { return h.Double(v); }
   bool RawNumber(const char*, SizeType, bool) { return false; }  // only with kParseNumbersAsStringsFlag
-  bool String(const char* s, SizeType n, bool) { return !has_surrogate(s, n) && h.String(std::string_view(s, n)); }
+  bool String(const char* s, SizeType n, bool copy) { return !has_surrogate(s, n) && h.String(s, n, copy); }
   bool StartObject() { return h.StartObject(); }
-  bool Key(const char* s, SizeType n, bool) { return !has_surrogate(s, n) && h.Key(std::string_view(s, n)); }
-  bool EndObject(SizeType) { return h.EndObject(); }
+  bool Key(const char* s, SizeType n, bool copy) { return !has_surrogate(s, n) && h.Key(s, n, copy); }
+  bool EndObject(SizeType n) { return h.EndObject(n); }
   bool StartArray() { return h.StartArray(); }
-  bool EndArray(SizeType) { return h.EndArray(); }
+  bool EndArray(SizeType n) { return h.EndArray(n); }
 };
 
 }  // namespace json_sax_detail
@@ -65,7 +64,7 @@ bool read_json_sax(std::string_view text, Handler& handler) {
   thread_local rapidjson::Reader reader;  // its stack holds the string being read
   constexpr unsigned kFlags =
       rapidjson::kParseIterativeFlag | rapidjson::kParseFullPrecisionFlag | rapidjson::kParseValidateEncodingFlag;
-  json_sax_detail::Adapter<Handler> strict{handler};
+  json_sax_detail::NoSurrogates<Handler> strict{handler};
   rapidjson::MemoryStream in(text.data(), text.size());
   // The stream gives NUL at its end, and the reader stops at a NUL: one
   // inside the text must not end it early with what follows unread.

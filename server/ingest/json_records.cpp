@@ -65,22 +65,29 @@ std::uint32_t Tree::add(Node::Type type, const char* key, std::size_t key_size) 
   return used_++;
 }
 
-// proto::read_json_sax's handler, appending to a Tree.
+// RapidJSON's SAX handler interface, appending to a Tree.
 class TreeBuilder {
  public:
+  using SizeType = rapidjson::SizeType;
   explicit TreeBuilder(Tree& t) : t_(t), stack_(t.open_), key_(t.key_) { stack_.clear(); }
   bool Null() { return value(Node::Type::Null); }
   bool Bool(bool b) { return value(Node::Type::Boolean, [b](Node& n) { n.boolean = b; }); }
-  bool Number(double v) { return value(Node::Type::Number, [v](Node& n) { n.number = v; }); }
-  bool String(std::string_view s) { return value(Node::Type::String, [s](Node& n) { n.text.assign(s); }); }
+  bool Int(int v) { return number(v); }
+  bool Uint(unsigned v) { return number(v); }
+  bool Int64(std::int64_t v) { return number(static_cast<double>(v)); }
+  bool Uint64(std::uint64_t v) { return number(static_cast<double>(v)); }
+  bool Double(double v) { return number(v); }
+  bool String(const char* s, SizeType size, bool) {
+    return value(Node::Type::String, [s, size](Node& n) { n.text.assign(s, size); });
+  }
   bool StartObject() { return open(Node::Type::Object); }
-  bool Key(std::string_view k) {
-    key_.assign(k);
+  bool Key(const char* k, SizeType size, bool) {
+    key_.assign(k, size);
     return true;
   }
-  bool EndObject() { return close(); }
+  bool EndObject(SizeType) { return close(); }
   bool StartArray() { return open(Node::Type::Array); }
-  bool EndArray() { return close(); }
+  bool EndArray(SizeType) { return close(); }
 
  private:
   template <typename Fill = void (*)(Node&)>
@@ -89,6 +96,7 @@ class TreeBuilder {
     fill(t_.nodes_[i]);
     return true;
   }
+  bool number(double v) { return value(Node::Type::Number, [v](Node& n) { n.number = v; }); }
   bool open(Node::Type type) {
     stack_.push_back(link(type));
     return true;

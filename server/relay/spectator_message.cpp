@@ -1,5 +1,6 @@
 #include "server/relay/spectator_message.hpp"
 
+#include <cstdint>
 #include <string_view>
 
 #include "proto/json_sax.hpp"
@@ -7,32 +8,31 @@
 namespace mc::relay {
 namespace {
 
-// proto::read_json_sax's handler over one message. It keeps the four members a
+// RapidJSON's SAX handler over one message. It keeps the four members a
 // spectator's message is read for and passes over everything else, so a
 // message costs no tree: the relay reads every spectator's every message,
 // and a tree was most of that (a map node and a string per member).
 class MessageReader {
  public:
+  using SizeType = rapidjson::SizeType;
+
   SpectatorMessage message;
   bool type_is_string = false;
 
   bool Null() { return other(); }
   bool Bool(bool) { return other(); }
-  bool Number(double v) {
-    if (depth_ == 1) {
-      if (field_ == Field::Time) message.time = v;
-      else if (field_ == Field::Speed) message.speed = v;
-      else set_other();
-    }
-    return top_level_ok();
-  }
-  bool String(std::string_view s) {
+  bool Int(int v) { return number(v); }
+  bool Uint(unsigned v) { return number(v); }
+  bool Int64(std::int64_t v) { return number(static_cast<double>(v)); }
+  bool Uint64(std::uint64_t v) { return number(static_cast<double>(v)); }
+  bool Double(double v) { return number(v); }
+  bool String(const char* s, SizeType size, bool) {
     if (depth_ != 1) return top_level_ok();
     if (field_ == Field::Type) {
-      message.type.assign(s);
+      message.type.assign(s, size);
       type_is_string = true;
     } else if (field_ == Field::Action) {
-      message.action.assign(s);
+      message.action.assign(s, size);
     } else {
       set_other();
     }
@@ -43,10 +43,11 @@ class MessageReader {
     if (depth_ == 0) return false;  // an array, not an object: stop here
     return open();
   }
-  bool EndObject() { return close(); }
-  bool EndArray() { return close(); }
-  bool Key(std::string_view key) {
+  bool EndObject(SizeType) { return close(); }
+  bool EndArray(SizeType) { return close(); }
+  bool Key(const char* k, SizeType size, bool) {
     if (depth_ == 1) {
+      const std::string_view key(k, size);
       field_ = key == "type" ? Field::Type
              : key == "action" ? Field::Action
              : key == "time" ? Field::Time
@@ -64,6 +65,14 @@ class MessageReader {
   bool top_level_ok() const { return depth_ > 0; }
   bool other() {
     if (depth_ == 1) set_other();
+    return top_level_ok();
+  }
+  bool number(double v) {
+    if (depth_ == 1) {
+      if (field_ == Field::Time) message.time = v;
+      else if (field_ == Field::Speed) message.speed = v;
+      else set_other();
+    }
     return top_level_ok();
   }
   // A member whose last value is not of its type reads as absent.
