@@ -12,7 +12,6 @@ runtime=(
   build-essential cmake ninja-build pkg-config   # compiler and build
   libboost-dev libboost-program-options-dev      # Asio + Beast (relay, live feed), options
   nlohmann-json3-dev                             # hello / control messages
-  rapidjson-dev                                  # strict SAX reading: JSON logs, spectators' messages
   libfast-float-dev                              # decimal -> double, the same in both builds
   libglm-dev                                     # vector maths in anim/
   zlib1g-dev                                     # .rcg.gz logs, gzipped mocap clips

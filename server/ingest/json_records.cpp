@@ -1,5 +1,6 @@
 #include "server/ingest/json_records.hpp"
 
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
@@ -11,21 +12,18 @@
 #include <string_view>
 #include <vector>
 
-#include "proto/json_sax.hpp"
 #include "server/ingest/text_show.hpp"
 
 namespace mc::ingest {
 namespace {
 
-// A record's JSON as a flat tree in one vector, built by RapidJSON's SAX
-// reader (proto/json_sax.hpp) and kept from record to record on each
-// thread: once the first records have sized it, a record allocates
-// nothing. (nlohmann's DOM made a heap node and a map entry per value, and
-// its SAX lexer grew a token buffer per record and built an exception text
-// for every refusal: over half of the JSON log fuzzer's time under ASan,
-// and half of a JSON log's reading time in a release build.) What the
-// decoders below read of a value is its type, number, text, and children
-// by key, the last one where a key repeats, as a DOM keeps it.
+// A record's JSON as a flat tree in one vector, built by nlohmann's SAX
+// parser and kept from record to record on each thread. nlohmann's DOM made
+// a heap node, and a map entry per key, for every value of every record:
+// under ASan that allocation was over half of the JSON log fuzzer's time,
+// and a log is thousands of shows. What the decoders below read of a value
+// is what they read of the DOM: its type, number, text, and children by key,
+// the last one where a key repeats (the DOM keeps the last).
 struct Node {
   enum class Type : std::uint8_t { Null, Boolean, Number, String, Object, Array };
   static constexpr std::uint32_t kNone = 0xffffffffu;
@@ -39,55 +37,55 @@ struct Node {
 
 class Tree {
  public:
-  // False when `text` is not one valid JSON value (read_json_sax's strict).
+  // False when `text` is not one valid JSON value.
   bool parse(std::string_view text);
   const Node& at(std::uint32_t i) const { return nodes_[i]; }
 
  private:
   friend class TreeBuilder;
-  std::uint32_t add(Node::Type type, const char* key, std::size_t key_size);
+  std::uint32_t add(Node::Type type, const std::string* key);
   std::vector<Node> nodes_;  // the first used_ are this record's; the rest keep their strings' room
   std::uint32_t used_ = 0;
-  // The builder's scratch, kept with the tree.
+  // The builder's scratch, kept with the tree so that a record costs no
+  // allocation once the first records have sized them.
   std::vector<std::uint32_t> open_;  // the containers being filled, innermost last
   std::string key_;                  // the key of the value to come
 };
 
-std::uint32_t Tree::add(Node::Type type, const char* key, std::size_t key_size) {
+std::uint32_t Tree::add(Node::Type type, const std::string* key) {
   if (used_ == nodes_.size()) nodes_.emplace_back();
   Node& n = nodes_[used_];
   n.type = type;
   n.boolean = false;
   n.number = 0;
-  n.key.assign(key, key_size);
+  if (key) n.key.assign(*key);
+  else n.key.clear();
   n.text.clear();
   n.first = n.last = n.next = Node::kNone;
   return used_++;
 }
 
-// RapidJSON's SAX handler interface, appending to a Tree.
+// nlohmann::json_sax's interface, appending to a Tree.
 class TreeBuilder {
  public:
-  using SizeType = rapidjson::SizeType;
+  using json = nlohmann::json;
   explicit TreeBuilder(Tree& t) : t_(t), stack_(t.open_), key_(t.key_) { stack_.clear(); }
-  bool Null() { return value(Node::Type::Null); }
-  bool Bool(bool b) { return value(Node::Type::Boolean, [b](Node& n) { n.boolean = b; }); }
-  bool Int(int v) { return number(v); }
-  bool Uint(unsigned v) { return number(v); }
-  bool Int64(std::int64_t v) { return number(static_cast<double>(v)); }
-  bool Uint64(std::uint64_t v) { return number(static_cast<double>(v)); }
-  bool Double(double v) { return number(v); }
-  bool String(const char* s, SizeType size, bool) {
-    return value(Node::Type::String, [s, size](Node& n) { n.text.assign(s, size); });
-  }
-  bool StartObject() { return open(Node::Type::Object); }
-  bool Key(const char* k, SizeType size, bool) {
-    key_.assign(k, size);
+  bool null() { return value(Node::Type::Null); }
+  bool boolean(bool b) { return value(Node::Type::Boolean, [b](Node& n) { n.boolean = b; }); }
+  bool number_integer(json::number_integer_t v) { return number(static_cast<double>(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return number(static_cast<double>(v)); }
+  bool number_float(json::number_float_t v, const json::string_t&) { return number(v); }
+  bool string(json::string_t& s) { return value(Node::Type::String, [&s](Node& n) { n.text.assign(s); }); }
+  bool binary(json::binary_t&) { return value(Node::Type::Null); }  // never from JSON text
+  bool start_object(std::size_t) { return open(Node::Type::Object); }
+  bool key(json::string_t& k) {
+    key_.assign(k);
     return true;
   }
-  bool EndObject(SizeType) { return close(); }
-  bool StartArray() { return open(Node::Type::Array); }
-  bool EndArray(SizeType) { return close(); }
+  bool end_object() { return close(); }
+  bool start_array(std::size_t) { return open(Node::Type::Array); }
+  bool end_array() { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) { return false; }
 
  private:
   template <typename Fill = void (*)(Node&)>
@@ -108,7 +106,7 @@ class TreeBuilder {
   // A new node, made the last child of the open container (if any).
   std::uint32_t link(Node::Type type) {
     const bool in_object = !stack_.empty() && t_.nodes_[stack_.back()].type == Node::Type::Object;
-    const std::uint32_t i = in_object ? t_.add(type, key_.data(), key_.size()) : t_.add(type, "", 0);
+    const std::uint32_t i = t_.add(type, in_object ? &key_ : nullptr);
     if (!stack_.empty()) {
       Node& parent = t_.nodes_[stack_.back()];
       if (parent.last == Node::kNone) parent.first = i;
@@ -125,7 +123,7 @@ class TreeBuilder {
 bool Tree::parse(std::string_view text) {
   used_ = 0;
   TreeBuilder b(*this);
-  return proto::read_json_sax(text, b) && used_ > 0;
+  return nlohmann::json::sax_parse(text.begin(), text.end(), &b) && used_ > 0;
 }
 
 // A value of the tree, as the decoders read it.

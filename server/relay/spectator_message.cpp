@@ -1,61 +1,57 @@
 #include "server/relay/spectator_message.hpp"
 
-#include <cstdint>
-#include <string_view>
-
-#include "proto/json_sax.hpp"
+#include <nlohmann/json.hpp>
 
 namespace mc::relay {
 namespace {
 
-// RapidJSON's SAX handler over one message. It keeps the four members a
+// nlohmann's SAX interface over one message. It keeps the four members a
 // spectator's message is read for and passes over everything else, so a
 // message costs no tree: the relay reads every spectator's every message,
 // and a tree was most of that (a map node and a string per member).
 class MessageReader {
  public:
-  using SizeType = rapidjson::SizeType;
+  using json = nlohmann::json;
 
   SpectatorMessage message;
   bool type_is_string = false;
 
-  bool Null() { return other(); }
-  bool Bool(bool) { return other(); }
-  bool Int(int v) { return number(v); }
-  bool Uint(unsigned v) { return number(v); }
-  bool Int64(std::int64_t v) { return number(static_cast<double>(v)); }
-  bool Uint64(std::uint64_t v) { return number(static_cast<double>(v)); }
-  bool Double(double v) { return number(v); }
-  bool String(const char* s, SizeType size, bool) {
+  bool null() { return other(); }
+  bool boolean(bool) { return other(); }
+  bool number_integer(json::number_integer_t v) { return number(static_cast<double>(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return number(static_cast<double>(v)); }
+  bool number_float(json::number_float_t v, const json::string_t&) { return number(v); }
+  bool string(json::string_t& s) {
     if (depth_ != 1) return top_level_ok();
     if (field_ == Field::Type) {
-      message.type.assign(s, size);
+      message.type = std::move(s);
       type_is_string = true;
     } else if (field_ == Field::Action) {
-      message.action.assign(s, size);
+      message.action = std::move(s);
     } else {
       set_other();
     }
     return true;
   }
-  bool StartObject() { return open(); }
-  bool StartArray() {
+  bool binary(json::binary_t&) { return other(); }  // never from JSON text
+  bool start_object(std::size_t) { return open(); }
+  bool start_array(std::size_t) {
     if (depth_ == 0) return false;  // an array, not an object: stop here
     return open();
   }
-  bool EndObject(SizeType) { return close(); }
-  bool EndArray(SizeType) { return close(); }
-  bool Key(const char* k, SizeType size, bool) {
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool key(json::string_t& k) {
     if (depth_ == 1) {
-      const std::string_view key(k, size);
-      field_ = key == "type" ? Field::Type
-             : key == "action" ? Field::Action
-             : key == "time" ? Field::Time
-             : key == "speed" ? Field::Speed
-                              : Field::Other;
+      field_ = k == "type" ? Field::Type
+             : k == "action" ? Field::Action
+             : k == "time" ? Field::Time
+             : k == "speed" ? Field::Speed
+                            : Field::Other;
     }
     return true;
   }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) { return false; }
 
  private:
   enum class Field { Other, Type, Action, Time, Speed };
@@ -100,8 +96,8 @@ class MessageReader {
 
 std::optional<SpectatorMessage> read_spectator_message(std::string_view text) {
   MessageReader reader;
-  // The whole text must be one JSON object (proto/json_sax.hpp).
-  if (!proto::read_json_sax(text, reader) || !reader.type_is_string) return std::nullopt;
+  // sax_parse is strict: the whole text must be one JSON value.
+  if (!nlohmann::json::sax_parse(text.begin(), text.end(), &reader) || !reader.type_is_string) return std::nullopt;
   return std::move(reader.message);
 }
 
