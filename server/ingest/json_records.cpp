@@ -123,6 +123,10 @@ class TreeBuilder {
 bool Tree::parse(std::string_view text) {
   used_ = 0;
   TreeBuilder b(*this);
+  // nlohmann's lexer takes a NUL byte for the end of the input, and so
+  // accepted `{"a":1}` followed by a NUL and anything at all. No JSON text
+  // holds a raw NUL (in a string it is written \u0000): refused here.
+  if (text.find('\0') != std::string_view::npos) return false;
   return nlohmann::json::sax_parse(text.begin(), text.end(), &b) && used_ > 0;
 }
 

@@ -159,13 +159,13 @@ struct Decoded {
   RecordKind kind = RecordKind::Other;
   WorldState state;
   GameContext ctx;
+  MessageRecord msg;
   std::string error;
 };
 
 Decoded decode(const std::string& text) {
   Decoded d;
-  MessageRecord msg;
-  d.ok = decode_json_record(text, d.ctx, d.state, msg, d.kind, d.error);
+  d.ok = decode_json_record(text, d.ctx, d.state, d.msg, d.kind, d.error);
   return d;
 }
 
@@ -202,11 +202,21 @@ TEST(JsonRecords, WhatIsNotARecordKind) {
   EXPECT_TRUE(d.ok);
   EXPECT_EQ(d.kind, RecordKind::Other);
   // Not an object, two values, cut short, empty, a number past double's range.
-  for (const char* bad : {R"({"show":{"time":1})", "[1,2]", R"({"a":1} {"b":2})", "", R"({"a":1e999})"}) {
+  // And strings that are not UTF-8: a lone surrogate's escape, its bytes,
+  // a byte no UTF-8 has; and a NUL with text after it.
+  for (const std::string& bad :
+       {std::string(R"({"show":{"time":1})"), std::string("[1,2]"), std::string(R"({"a":1} {"b":2})"), std::string(),
+        std::string(R"({"a":1e999})"), std::string(R"({"msg":{"time":1,"message":"\udc00"}})"),
+        std::string(R"({"msg":{"time":1,"message":"\ud800"}})"), std::string("{\"msg\":{\"message\":\"\xed\xa0\x80\"}}"),
+        std::string("{\"msg\":{\"message\":\"\xff\"}}"), std::string("{\"a\":1}\0{\"b\":2}", 15)}) {
     d = decode(bad);
     EXPECT_FALSE(d.ok) << bad;
     EXPECT_EQ(d.error, "invalid JSON") << bad;
   }
+  // A surrogate pair is one code point, and reads as its UTF-8.
+  d = decode(R"({"msg":{"time":1,"message":"\ud83d\ude00"}})");
+  EXPECT_TRUE(d.ok) << d.error;
+  EXPECT_EQ(d.msg.text, "\xf0\x9f\x98\x80");
   // The server parameters, numbers and flags as the DOM wrote them.
   d = decode(R"({"server_param":{"ball_size":0.085,"goal_width":14.02,"synch_mode":true,"x":null,"v":"a","v":"b"}})");
   EXPECT_TRUE(d.ok);

@@ -65,6 +65,13 @@ TEST(SpectatorMessage, ReadsEveryMessageAsAParsedTreeDoes) {
       R"({"type":"replay",})",
       "{\"type\":\"re\xffplay\"}",  // not UTF-8
       "{\"type\":\"replay\"\0}",
+      R"({"type":"\uD800"})",        // a lone high surrogate
+      R"({"type":"\uDC00"})",        // a lone low surrogate
+      R"({"type":"\uD83D\uDE00"})",  // a pair
+      "{\"type\":\"\xed\xb0\x80\"}",  // a surrogate's bytes, raw
+      R"({"\uDC00":"replay","type":"replay"})",  // ... in a key
+      R"({"type":"replay","time":-0})",
+      R"({"type":"replay","time":123456789012345678901234567890})",
       deep,
   };
   for (const auto& text : texts) {
@@ -77,6 +84,11 @@ TEST(SpectatorMessage, ReadsEveryMessageAsAParsedTreeDoes) {
     EXPECT_EQ(got->time, want->time) << text;
     EXPECT_EQ(got->speed, want->speed) << text;
   }
+  // A NUL byte is not the end of the text: a message with a NUL and junk
+  // after it is refused (nlohmann's own reader, the tree's too, stops at
+  // the NUL and accepts it), and so is a NUL inside a string.
+  EXPECT_FALSE(read_spectator_message(std::string("{\"type\":\"replay\"}\0 junk", 23)));
+  EXPECT_FALSE(read_spectator_message(std::string("{\"type\":\"re\0play\"}", 19)));
   // And what the tree read, in plain figures, for the common messages.
   const auto seek = read_spectator_message(R"({"type":"replay","action":"seek","time":1234})");
   ASSERT_TRUE(seek);
