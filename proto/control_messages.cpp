@@ -1,6 +1,7 @@
 #include "proto/control_messages.hpp"
 
 #include "proto/json_number.hpp"
+#include "proto/json_text.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -277,7 +278,7 @@ std::string to_json(const ControlMessage& message) {
 }
 
 std::string control_type(std::string_view text, std::string& error) {
-  const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  const json j = parse_json_text(text);
   if (j.is_discarded() || !j.is_object()) {
     error = "control message is not a JSON object";
     return "";
@@ -291,7 +292,7 @@ std::string control_type(std::string_view text, std::string& error) {
 }
 
 bool control_from_json(std::string_view text, ControlMessage& out, std::string& error) {
-  const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  const json j = parse_json_text(text);
   if (j.is_discarded() || !j.is_object()) {
     error = "control message is not a JSON object";
     return false;

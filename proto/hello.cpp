@@ -1,6 +1,7 @@
 #include "proto/hello.hpp"
 
 #include "proto/json_number.hpp"
+#include "proto/json_text.hpp"
 
 #include "proto/pose_frame.hpp"
 #include "proto/quantizer.hpp"
@@ -107,7 +108,7 @@ json hello_to_json_value(const Hello& h) {
 std::string to_json(const Hello& hello) { return hello_to_json_value(hello).dump(); }
 
 bool hello_from_json(std::string_view text, Hello& out, std::string& error) {
-  const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  const json j = parse_json_text(text);
   if (j.is_discarded() || !j.is_object()) {
     error = "hello is not a JSON object";
     return false;

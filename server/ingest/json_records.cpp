@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "proto/json_text.hpp"
 #include "server/ingest/text_show.hpp"
 
 namespace mc::ingest {
@@ -122,10 +123,7 @@ class TreeBuilder {
 
 bool Tree::parse(std::string_view text) {
   used_ = 0;
-  // nlohmann's lexer takes a NUL byte for the end of the input, and so
-  // accepted `{"a":1}` followed by a NUL and anything at all. No JSON text
-  // holds a raw NUL (in a string it is written \u0000): refused here.
-  if (text.find('\0') != std::string_view::npos) return false;
+  if (!proto::may_be_json_text(text)) return false;
   TreeBuilder b(*this);
   return nlohmann::json::sax_parse(text.begin(), text.end(), &b) && used_ > 0;
 }

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "proto/json_text.hpp"
+
 namespace mc::relay {
 namespace {
 
@@ -96,10 +98,8 @@ class MessageReader {
 
 std::optional<SpectatorMessage> read_spectator_message(std::string_view text) {
   MessageReader reader;
-  // sax_parse is strict: the whole text must be one JSON value. But its
-  // lexer takes a NUL byte for the end of the input (it accepted a message
-  // followed by a NUL and junk), and no JSON text holds a raw NUL.
-  if (text.find('\0') != std::string_view::npos) return std::nullopt;
+  // sax_parse is strict: the whole text must be one JSON value.
+  if (!proto::may_be_json_text(text)) return std::nullopt;
   if (!nlohmann::json::sax_parse(text.begin(), text.end(), &reader) || !reader.type_is_string) return std::nullopt;
   return std::move(reader.message);
 }

@@ -82,6 +82,12 @@ TEST(ControlMessages, StaminaNeedsElevenValuesInRange) {
   EXPECT_FALSE(control_from_json(R"({"type":"stamina","seq":1,"time":1,"left":[1,2,3,4,5,6,7,8,9,10,-7],"right":)" + eleven + "}", m, error));
   EXPECT_NE(error.find("out of range"), std::string::npos) << error;
   EXPECT_FALSE(control_from_json(R"({"type":"stamina","seq":1,"time":1,"left":"x","right":)" + eleven + "}", m, error));
+  // A whole message, then a NUL and junk (nlohmann's parser stopped at the NUL).
+  const std::string nul_junk = R"({"type":"stamina","seq":1,"time":1,"left":)" + eleven + R"(,"right":)" + eleven + "}" +
+                               std::string(1, '\0') + "junk";
+  EXPECT_FALSE(control_from_json(nul_junk, m, error));
+  EXPECT_EQ(control_type(nul_junk, error), "");
+  EXPECT_EQ(error, "control message is not a JSON object");
 }
 
 TEST(ControlMessages, ShiftFramesMovesSeqAndContactTimeTogether) {

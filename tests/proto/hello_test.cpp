@@ -68,6 +68,11 @@ TEST(Hello, RefusesBadInputWithAClearError) {
   j = hello_to_json_value(sample_hello());
   j.erase("frame_rate");
   EXPECT_FALSE(hello_from_json(j.dump(), back, error));
+  // A whole hello, then a NUL and junk (nlohmann's parser stopped at the NUL).
+  const std::string good = to_json(sample_hello());
+  ASSERT_TRUE(hello_from_json(good, back, error)) << error;
+  EXPECT_FALSE(hello_from_json(good + std::string(1, '\0') + "junk", back, error));
+  EXPECT_EQ(error, "hello is not a JSON object");
 }
 
 }  // namespace
