@@ -94,12 +94,24 @@ class MessageReader {
   Field field_ = Field::Other;
 };
 
+// A message is one JSON object: its first and last characters other than
+// JSON's whitespace are braces. Text that fails this is refused before the
+// parser, which would refuse it too, but only after building an exception
+// (a message string) for it: junk from a hostile or broken client costs no
+// more than a look at its ends.
+bool may_be_json_object(std::string_view text) {
+  constexpr std::string_view kSpace = " \t\n\r";
+  const std::size_t first = text.find_first_not_of(kSpace);
+  const std::size_t last = text.find_last_not_of(kSpace);
+  return first != std::string_view::npos && text[first] == '{' && text[last] == '}';
+}
+
 }  // namespace
 
 std::optional<SpectatorMessage> read_spectator_message(std::string_view text) {
   MessageReader reader;
   // sax_parse is strict: the whole text must be one JSON value.
-  if (!proto::may_be_json_text(text)) return std::nullopt;
+  if (!may_be_json_object(text) || !proto::may_be_json_text(text)) return std::nullopt;
   if (!nlohmann::json::sax_parse(text.begin(), text.end(), &reader) || !reader.type_is_string) return std::nullopt;
   return std::move(reader.message);
 }

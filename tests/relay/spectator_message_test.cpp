@@ -36,6 +36,11 @@ TEST(SpectatorMessage, ReadsEveryMessageAsAParsedTreeDoes) {
       R"({"type":"replay","action":"speed","speed":0.5})",
       R"({"type":"replay","action":"speed","speed":-3e2,"time":7.25})",
       R"( {"action":"pause", "type" : "replay"} )",
+      " \t\r\n{\"type\":\"replay\"}\n\r\t ",  // JSON's four whitespace characters, both ends
+      "\f{\"type\":\"replay\"}",                   // ... and one that is not
+      "{\"type\":\"replay\"}\v",
+      R"(x{"type":"replay"})",
+      R"({"type":"replay"})" "\n}",
       R"({"type":"replay","type":"timeshift"})",           // the last of a repeated key
       R"({"type":"replay","type":7})",                     // ... even of another type
       R"({"type":7,"type":"replay"})",
