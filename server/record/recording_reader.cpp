@@ -161,16 +161,29 @@ bool RecordingReader::load_index(std::uint64_t file_size) {
 }
 
 bool RecordingReader::scan(std::uint64_t from, std::uint64_t file_size, std::string& error) {
+  // Records are read a block at a time: a chunk record is a few KB (a
+  // second of frames), so one read brings many, where a read for each
+  // length and each record was most of opening a file that has no index.
+  constexpr std::size_t kBlock = 64u << 10;
   std::uint64_t at = from;
-  std::string bytes, err;
+  std::string block, err;
+  std::uint64_t block_at = from;  // `block` holds the file's bytes from block_at on
   std::vector<rec::ChunkEntry> entries;
   while (at < file_size) {
-    std::string len;
-    if (!read_at(at, 4, len, error)) return false;
-    const std::size_t size = rec::record_size_hint(len);
+    std::string_view rest = std::string_view(block).substr(std::min<std::size_t>(at - block_at, block.size()));
+    std::size_t size = rec::record_size_hint(rest);
+    if (size > rec::kMaxRecordPayload + rec::kRecordOverhead) break;  // a damaged length: the end
+    if (size == 0 || size > rest.size()) {  // the block ends inside this record: read on from it
+      // No further than the size known: what is past it is for a later refresh.
+      const auto want = static_cast<std::size_t>(std::min<std::uint64_t>(std::max(kBlock, size), file_size - at));
+      if (!read_at(at, want, block, error)) return false;
+      block_at = at;
+      rest = block;
+      size = rec::record_size_hint(rest);
+    }
     rec::RecordView view;
-    if (size == 0 || size > rec::kMaxRecordPayload + rec::kRecordOverhead || !read_at(at, size, bytes, error) ||
-        rec::parse_record(bytes, view, err) != rec::RecordStatus::Ok)
+    if (size == 0 || size > rec::kMaxRecordPayload + rec::kRecordOverhead || size > rest.size() ||
+        rec::parse_record(rest.substr(0, size), view, err) != rec::RecordStatus::Ok)
       break;  // the unfinished (or damaged) end: keep what came before
     if (view.type == rec::RecordType::Index) {  // the writer closed the file: no more data
       finished_ = true;
@@ -211,12 +224,16 @@ std::uint64_t RecordingReader::frame_count() const {
 
 bool RecordingReader::load_chunk(std::size_t index, std::string& error) {
   const rec::ChunkInfo& c = chunks_[index];
-  std::string len;
-  if (!read_at(c.offset, 4, len, error)) return false;
-  const std::size_t size = rec::record_size_hint(len);
+  // One read of a chunk's usual size and some, then a second only for a
+  // longer chunk: not one read for its length and another for the rest.
+  constexpr std::size_t kReadAhead = 16u << 10;
+  if (!read_at(c.offset, kReadAhead, chunk_bytes_, error)) return false;
+  const std::size_t size = rec::record_size_hint(chunk_bytes_);
   rec::RecordView view;
-  if (size == 0 || size > rec::kMaxRecordPayload + rec::kRecordOverhead || !read_at(c.offset, size, chunk_bytes_, error) ||
-      rec::parse_record(chunk_bytes_, view, error) != rec::RecordStatus::Ok || view.type != rec::RecordType::Chunk) {
+  if (size == 0 || size > rec::kMaxRecordPayload + rec::kRecordOverhead ||
+      (size > chunk_bytes_.size() && chunk_bytes_.size() == kReadAhead && !read_at(c.offset, size, chunk_bytes_, error)) ||
+      rec::parse_record(std::string_view(chunk_bytes_).substr(0, size), view, error) != rec::RecordStatus::Ok ||
+      view.type != rec::RecordType::Chunk) {
     error = path_ + ": damaged chunk at offset " + std::to_string(c.offset) + (error.empty() ? "" : ": " + error);
     return false;
   }

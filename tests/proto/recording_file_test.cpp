@@ -243,6 +243,41 @@ TEST_F(RecordingFile, UnclosedFileIsRecoveredFromItsRecords) {
   EXPECT_EQ(f.time, 40);
 }
 
+// The scan reads records a block (64 KB) at a time: a file of many blocks,
+// with records across every block's end, is recovered whole.
+TEST_F(RecordingFile, UnclosedFileOfManyReadBlocksIsRecoveredWhole) {
+  const auto many = proto::testing::scripted_frames(hello.skeleton, 4000);
+  const std::string path = dir + "/long.mcrec";
+  {
+    RecordingWriter w;
+    std::string error;
+    ASSERT_TRUE(w.open(path, proto::to_json(hello), error)) << error;
+    proto::FrameEncoder enc(hello.skeleton);
+    for (const auto& f : many) {
+      bool key = false;
+      ASSERT_TRUE(w.add_frame(enc.encode(f, key), error)) << error;
+    }
+    ASSERT_TRUE(w.flush(error)) << error;
+    fs::copy_file(path, path + ".unclosed");  // without the index the destructor writes
+  }
+  ASSERT_GT(fs::file_size(path + ".unclosed"), 3u * (64u << 10)) << "the file must span several read blocks";
+  RecordingReader closed, unclosed;
+  std::string error;
+  ASSERT_TRUE(closed.open(path, error)) << error;
+  ASSERT_TRUE(unclosed.open(path + ".unclosed", error)) << error;
+  EXPECT_FALSE(closed.recovered());
+  EXPECT_TRUE(unclosed.recovered());
+  EXPECT_EQ(unclosed.frame_count(), many.size());
+  ASSERT_EQ(unclosed.chunks().size(), closed.chunks().size());
+  for (std::size_t i = 0; i < closed.chunks().size(); ++i) {
+    EXPECT_EQ(unclosed.chunks()[i].offset, closed.chunks()[i].offset) << i;
+    EXPECT_EQ(unclosed.chunks()[i].first_time, closed.chunks()[i].first_time) << i;
+  }
+  PoseFrame f;
+  ASSERT_TRUE(unclosed.seek(many.back().time, f, error)) << error;
+  EXPECT_EQ(f.time, many.back().time);
+}
+
 TEST_F(RecordingFile, FileCutAnywhereKeepsEveryCompleteChunk) {
   const std::string path = write(200, true);
   const auto size = fs::file_size(path);
