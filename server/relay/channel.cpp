@@ -12,9 +12,15 @@ namespace {
 // with neither (a replay's status, once a second per spectator, or any
 // other type) is not parsed at all.
 int kept_slot(std::string_view json) {
+  // The quoted names, made once, not per type per message (an allocation
+  // each: every control message of every channel comes through here).
+  static const auto quoted = [] {
+    std::array<std::string, std::size(Channel::kKeptControlTypes)> q;
+    for (std::size_t i = 0; i < q.size(); ++i) q[i] = std::string("\"") + Channel::kKeptControlTypes[i] + '"';
+    return q;
+  }();
   bool named = json.find('\\') != std::string_view::npos;
-  for (const char* type : Channel::kKeptControlTypes)
-    named = named || json.find(std::string("\"") + type + '"') != std::string_view::npos;
+  for (const std::string& type : quoted) named = named || json.find(type) != std::string_view::npos;
   if (!named) return -1;
   const auto j = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
   if (!j.is_object()) return -1;
