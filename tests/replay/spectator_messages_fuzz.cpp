@@ -2,8 +2,12 @@
 // them: the session's reading (relay/spectator_message.hpp: time shift or
 // replay) and a replay player steered by them (pause, play, seek, speed,
 // goals) over a recording. The input is up to 8 messages, one a line,
-// given to a player in order. Must never crash, hang or read out of
-// bounds (ASan/UBSan); ignoring a message is fine.
+// given to a player in order as the session routes them
+// (relay/websocket_session.cpp, on_text): a replay's player reads the
+// messages of type "replay"; a time-shifted spectator's player gets those
+// too, and each time-shift seek as a replay seek, until "live" ends it.
+// Must never crash, hang or read out of bounds (ASan/UBSan); ignoring a
+// message is fine.
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -56,8 +60,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // so a crashing input replays alone. Odd sizes use the follow (time
   // shift) mode.
   const bool follow = (size & 1) != 0;
-  // The session's reading first: an input none of whose lines reads as a
-  // message gives the player nothing to do, and making one (a reader, a
+  // The session's reading and routing first: an input none of whose lines
+  // reaches the player gives it nothing to do, and making one (a reader, a
   // channel) to start and close it would be most of such an input's time.
   const std::string_view input(reinterpret_cast<const char*>(data), size);
   std::vector<mc::relay::SpectatorMessage> messages;
@@ -65,8 +69,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int n = 0; n < 8 && pos <= input.size(); ++n) {
     std::size_t end = input.find('\n', pos);
     if (end == std::string_view::npos) end = input.size();
-    if (auto m = mc::relay::read_spectator_message(input.substr(pos, end - pos))) messages.push_back(std::move(*m));
+    auto m = mc::relay::read_spectator_message(input.substr(pos, end - pos));
     pos = end + 1;
+    if (!m) continue;
+    if (m->type == "replay") {
+      messages.push_back(std::move(*m));
+    } else if (follow && m->type == "timeshift" && m->action == "seek" && m->time) {
+      messages.push_back(mc::relay::SpectatorMessage{"replay", "seek", *m->time, std::nullopt});
+    } else if (follow && m->type == "timeshift" && m->action == "live") {
+      break;  // back to the live channel: the session closes the player
+    }
   }
   if (messages.empty()) return 0;
   std::shared_ptr<mc::replay::ReplayPlayer> player;
