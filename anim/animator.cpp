@@ -161,14 +161,20 @@ void Animator::plan_actions(std::uint64_t pos, int slot) {
       in.root_x = static_cast<float>(0.5 * (p.x + q.x));
       in.root_y = static_cast<float>(0.5 * (p.y + q.y));
       // The heading the player will have at contact: the per-frame filter of
-      // player_animation run forward from now towards the 2D body's heading.
+      // player_animation run forward over the frames from now to the
+      // contact frame (k - 1, half-way) with the targets emit_cycle will give
+      // it. (A constant target one frame short left the body up to 84 deg
+      // off the plan where the player turned just before the kick, and the
+      // planned foot on the wrong side of the ball: issue 23.)
       {
-        const float target = smoothed_heading(k - 1, slot);
-        const double now_s = static_cast<double>(pos) * step_s;
-        const int frames = static_cast<int>(std::lround((contact - now_s) / (0.5 * step_s)));
         float h = ctx.heading;
-        for (int n = 0; n < frames; ++n)
+        const auto frames = 2 * (k - pos);
+        for (std::uint64_t n = 0; n < frames; ++n) {
+          const std::uint64_t at = pos + n / 2;
+          const float h_at = smoothed_heading(at, slot);
+          const float target = n % 2 == 0 ? h_at : lerp_deg(h_at, smoothed_heading(at + 1, slot), 0.5f);
           h = wrap_deg(h + clampf(0.5f * delta_deg(target, h), -kMaxTurnPerFrameDeg, kMaxTurnPerFrameDeg));
+        }
         in.heading = h;
       }
       in.ball_x = static_cast<float>(sp.ball.x);

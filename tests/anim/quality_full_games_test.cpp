@@ -49,9 +49,15 @@ struct Bounds {
 // planted support foot (anim/action_motion.cpp) since 2026-11-26: thighs /
 // shins / feet too close 39/53/34 -> 26/11/16 and 49/83/30 -> 39/19/17 at
 // 20 Hz; the bounds went 52/90/45 -> 45/25/22 (60 Hz 800/370/250 -> 740/160/200).
-constexpr Bounds kAt20Hz{0.20, 4.8, 0.02, 0.09, 0, 60, 45, 45, 45, 580, 45, 25, 22, 0, 500, 0.02, 4.5,
+// Kicks meet issue 23's target (max 3 cm) since a kick is planned for the
+// heading the body has at contact (anim/animator.cpp, 2026-11-27): the
+// farthest foot 0.084/0.021 m -> 0.028/0.022 m. The worst was a receiver
+// who turned 150 deg, kicked and turned away: planned for a body 84 deg off,
+// the foot on the wrong side of the ball. With it the sprint band of game 2
+// (9+ m/s, 189 frame pairs) went 4.74 -> 4.81 m/s, so its bound 4.8 -> 4.9.
+constexpr Bounds kAt20Hz{0.20, 4.9, 0.02, 0.03, 0, 60, 45, 45, 45, 580, 45, 25, 22, 0, 500, 0.02, 4.5,
                          -0.02, 0.31};
-constexpr Bounds kAt60Hz{0.20, 4.9, 0.02, 0.09, 0, 60, 45, 45, 45, 2100, 740, 160, 200, 0, 1200, 0.02, 4.5,
+constexpr Bounds kAt60Hz{0.20, 4.9, 0.02, 0.03, 0, 60, 45, 45, 45, 2100, 740, 160, 200, 0, 1200, 0.02, 4.5,
                          -0.11, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
