@@ -14,6 +14,11 @@ namespace {
 
 float lerpf(double a, double b, float t) { return static_cast<float>(a + (b - a) * t); }
 
+// A tackler moving more than this in a cycle (2 m/s at 100 ms) is up again...
+constexpr float kGetUpMovePerCycle = 0.2f;
+// ...and is back on his feet this long after (the tackle's blend-out, s).
+constexpr float kTackleGetUpS = 0.3f;
+
 }  // namespace
 
 Animator::Animator(const SkeletonDef& skeleton, const GameParams& params, AnimConfig config)
@@ -331,6 +336,16 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       }
       if (ctx.motion_active) {
         const float tau = static_cast<float>(now - ctx.motion.contact_time_s);
+        // A tackler the server lets run again (the tackle bit gone, the 2D
+        // body faster than a jog) gets up now rather than at the end of
+        // tackle_cycles: held on the grass, the slide's pose glided along
+        // with the runner at up to 9.6 m/s (issue 23). The envelope's own
+        // 0.3 s ramp brings him up, with no jump.
+        if (ctx.motion.kind == MotionKind::Tackle && tau > 0 && (pa.state & (state_bits::kTackle | state_bits::kTackleFault)) == 0 &&
+            pm::hypot(in.move_dx, in.move_dy) > kGetUpMovePerCycle && ctx.motion.end_s > tau + kTackleGetUpS) {
+          ctx.motion.end_s = tau + kTackleGetUpS;
+          ctx.motion.follow_s = std::min(ctx.motion.follow_s, tau);
+        }
         if (tau > ctx.motion.end_s + 1e-4f) ctx.motion_active = false;
         else if (actions_on && pa.active()) {
           sample = sample_action(ctx.motion, tau, ctx.heading, in.x, in.y);

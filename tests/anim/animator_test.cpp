@@ -250,6 +250,36 @@ TEST(Animator, KicksInConsecutiveCyclesAreOneKick) {
   EXPECT_EQ(kicks, 2);
 }
 
+// A tackler the server lets run again: left 1 tackles at cycle 20 (the bit
+// on that cycle only), then sprints off at 0.9 m a cycle from cycle 23. He
+// gets up within the tackle's 0.3 s blend-out of starting to run, not at the
+// end of tackle_cycles (1 s): the slide's pose must not glide along with the
+// sprinter (issue 23: up to 9.6 m/s of "grounded foot" in a real game).
+TEST(Animator, ATacklerWhoRunsOffGetsUp) {
+  const int k = 20, run_from = 23;
+  auto game = run_game(60, 0.0, 100);
+  double x = game[0].players[0].x;
+  for (std::size_t i = 0; i < game.size(); ++i) {
+    const int c = static_cast<int>(i);
+    if (c >= run_from) x += 0.9;
+    game[i].players[0].x = x;
+    game[i].players[0].vx = c >= run_from ? 0.9 : 0.0;
+    game[i].ball.x = c < k ? x + 0.6 : game[0].players[0].x + 3.0;
+    game[i].ball.y = 0.0;
+  }
+  game[static_cast<std::size_t>(k)].players[0].state |= state_bits::kTackle;
+  const testing::AnimatedGame g = testing::animate_game(game);
+  // Down in the slide just after the tackle...
+  const auto at = [&](int cycle) { return static_cast<std::size_t>(2 * cycle); };
+  EXPECT_LT(g.frames[at(k + 1)].players[0].z, 0.6f);
+  EXPECT_TRUE(g.infos[at(k + 1)].players[0].in_action);
+  // ...and up, running, 0.4 s after he starts to run (tackle_cycles would
+  // hold the slide until cycle 30).
+  const int up = run_from + 4;
+  EXPECT_FALSE(g.infos[at(up)].players[0].in_action);
+  EXPECT_GT(g.frames[at(up)].players[0].z, 0.8f);
+}
+
 TEST(Animator, DetailLevelsSwitchRunningAndKicking) {
   AnimConfig none;
   none.detail = DetailLevel::None;

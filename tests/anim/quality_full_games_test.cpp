@@ -55,9 +55,13 @@ struct Bounds {
 // who turned 150 deg, kicked and turned away: planned for a body 84 deg off,
 // the foot on the wrong side of the ball. With it the sprint band of game 2
 // (9+ m/s, 189 frame pairs) went 4.74 -> 4.81 m/s, so its bound 4.8 -> 4.9.
-constexpr Bounds kAt20Hz{0.20, 4.9, 0.02, 0.03, 0, 60, 45, 45, 45, 580, 45, 25, 22, 0, 500, 0.02, 4.5,
+// A tackler who runs off gets up (anim/animator.cpp, 2026-11-27) instead of
+// gliding in the slide's pose for tackle_cycles: the worst moving band went
+// 3.50/4.81 -> 1.22/1.21 m/s at 20 Hz and 4.63/4.87 -> 4.30/4.30 at 60 Hz,
+// so the bounds 4.9 -> 1.3 and 4.9 -> 4.4.
+constexpr Bounds kAt20Hz{0.20, 1.3, 0.02, 0.03, 0, 60, 45, 45, 45, 580, 45, 25, 22, 0, 500, 0.02, 4.5,
                          -0.02, 0.31};
-constexpr Bounds kAt60Hz{0.20, 4.9, 0.02, 0.03, 0, 60, 45, 45, 45, 2100, 740, 160, 200, 0, 1200, 0.02, 4.5,
+constexpr Bounds kAt60Hz{0.20, 4.4, 0.02, 0.03, 0, 60, 45, 45, 45, 2100, 740, 160, 200, 0, 1200, 0.02, 4.5,
                          -0.11, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
