@@ -280,7 +280,10 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
       float phase_left = 0.5f;
       if (s.moving) {
         const float fp = wrap01(s.phase - 0.5f * static_cast<float>(i));
-        const bool due = fp >= gait.duty && f.stance_s > 0.049f;
+        // A foot that landed late (its phase already past its stance) still
+        // bears the body for half a stance: lifting it a frame after it
+        // landed left both feet up through a stop (issue 23, floating).
+        const bool due = fp >= gait.duty && f.stance_s > std::max(0.049f, 0.5f * gait.stance_s);
         // Walking: the other foot must be down first (double support).
         const bool support_ok = (s.run > 0.5f && !no_flight) || o.planted;
         phase_left = 1.0f - fp;

@@ -462,7 +462,11 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             const double mv = glm::length(ab - aa) * per_frame;
             const double rel = glm::length((ab - pel_b) - (aa - pel_a)) * per_frame;
             r.ankle_step_max_m = std::max(r.ankle_step_max_m, mv);
-            if (mv > kAnklePopM || rel > kAnklePopRelM) ++r.ankle_pops;
+            if (mv > kAnklePopM || rel > kAnklePopRelM) {
+              ++r.ankle_pops;
+              if (slides_over > 0 && m == 1)
+                std::fprintf(stderr, "pop seq %u slot %zu foot %d move %.2f rel %.2f root %.1f m/s\n", f.seq, p, s, mv, rel, root_v);
+            }
           }
           // Floating.
           const float low = std::min(g.feet[0].lowest, g.feet[1].lowest);

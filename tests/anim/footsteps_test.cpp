@@ -132,6 +132,20 @@ TEST(Footsteps, ARunnerWhoStopsToAShuffleComesDown) {
     }
 }
 
+// A runner who brakes hard (7 m/s, then 2.8 m/s for two frames, then a
+// shuffle; left 2 at seq 994-1006 of the bundled game): a foot that lands
+// late in its stride still bears the body for half a stance. Lifted again
+// on the next frame (its phase already past its stance), it left both feet
+// up for 0.4 s while the body stood (issue 23, floating).
+TEST(Footsteps, AFootThatLandsLateStillBearsTheBody) {
+  for (int start = 60; start < 72; ++start) {
+    FootstepState s;
+    drive(s, start, [](int) { return 7.0f; });
+    const Trip after = drive(s, 30, [](int f) { return f < 2 ? 2.8f : f < 4 ? 1.0f : 0.4f; });
+    EXPECT_LE(after.frames_in_flight, 3) << "stop at frame " << start;
+  }
+}
+
 TEST(Footsteps, ComesToAStandstillWithBothFeetUnderTheHips) {
   FootstepState s;
   drive(s, 60, [](int) { return 4.0f; });
