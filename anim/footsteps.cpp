@@ -99,6 +99,8 @@ void plant(FootState& f, float x, float y, float yaw, float pitch) {
 // Below this root speed (m/s) a body has no flight phase (human running
 // starts near 2 m/s; gait_timing.hpp).
 constexpr float kFlightMinSpeed = 2.0f;
+// Both feet up below that speed: the landing foot's sole comes this low (m).
+constexpr float kReachDownSoleM = 0.07f;
 
 void lift(FootState& f, float phase_left, float lift_m) {
   float ax, ay, ah;
@@ -453,6 +455,16 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
   out.pelvis_height = pelvis;
   out.run = s.run;
   out.amplitude = amp;
+  // Both feet up while the body is too slow for a flight (the gait's
+  // smoothed speed, or the 2D body's own over this frame or the next:
+  // RoboCup players' speed swings from cycle to cycle, a turn's cycle
+  // slows them to a walk): the foot further through its swing reaches
+  // down for the grass, its sole at most kReachDownSoleM up, rather than
+  // leave the body hanging (issue 23, floating).
+  const bool slow_frame = pm::hypot(in.x - s.x, in.y - s.y) < kFlightMinSpeed * dt ||
+                          pm::hypot(hip_nx - in.x, hip_ny - in.y) < kFlightMinSpeed * dt;
+  const bool both_up = !s.feet[0].planted && !s.feet[1].planted && !s.feet[0].held && !s.feet[1].held;
+  const int reach_down = (no_flight || slow_frame) && both_up ? (s.feet[0].u >= s.feet[1].u ? 0 : 1) : -1;
   for (int i = 0; i < 2; ++i) {
     const FootState& f = s.feet[i];
     float ax, ay, ah, yaw, pitch;
@@ -462,6 +474,7 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
       pitch = f.pitch;
     } else {
       swing_ankle(f, s.run, ax, ay, ah, yaw, pitch);
+      if (i == reach_down) ah -= std::max(0.0f, sole_height(ah, pitch) - kReachDownSoleM);
     }
     to_target(body, ax, ay, ah, yaw, pitch, out.feet[i]);
     out.planted[i] = f.planted;
