@@ -18,6 +18,9 @@ float lerpf(double a, double b, float t) { return static_cast<float>(a + (b - a)
 constexpr float kGetUpMovePerCycle = 0.2f;
 // ...and is back on his feet this long after (the tackle's blend-out, s).
 constexpr float kTackleGetUpS = 0.3f;
+// A kick's support foot this far from the 2D root (m) is locomotion's again
+// (action_motion.cpp, kick()).
+constexpr float kSupportReleaseM = 0.45f;
 
 }  // namespace
 
@@ -345,6 +348,16 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
             pm::hypot(in.move_dx, in.move_dy) > kGetUpMovePerCycle && ctx.motion.end_s > tau + kTackleGetUpS) {
           ctx.motion.end_s = tau + kTackleGetUpS;
           ctx.motion.follow_s = std::min(ctx.motion.follow_s, tau);
+        }
+        // A kick whose support foot locomotion has taken back (the 2D body
+        // ran on past its reach) ends its follow-through now: held up for
+        // the rest of a merged kick's long follow-through, the kicking foot
+        // left both feet in the air (issue 23, floating).
+        if (ctx.motion.kind == MotionKind::Kick && tau > 0.12f && tau < ctx.motion.follow_s &&
+            pm::hypot(ctx.motion.support_x - in.x, ctx.motion.support_y - in.y) > kSupportReleaseM) {
+          const float cut = tau - ctx.motion.follow_s;
+          ctx.motion.follow_s = tau;
+          ctx.motion.end_s = std::max(ctx.motion.end_s + cut, tau + 0.15f);
         }
         if (tau > ctx.motion.end_s + 1e-4f) ctx.motion_active = false;
         else if (actions_on && pa.active()) {
