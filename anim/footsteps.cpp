@@ -478,6 +478,7 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
     }
     to_target(body, ax, ay, ah, yaw, pitch, out.feet[i]);
     out.planted[i] = f.planted;
+    out.reaching[i] = i == reach_down;
     out.sole_h[i] = f.planted ? 0.0f : std::max(0.0f, sole_height(ah, pitch));
   }
   s.x = in.x; s.y = in.y; s.heading = in.heading;

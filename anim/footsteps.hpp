@@ -111,6 +111,9 @@ struct FootstepOutput {
   FootTarget feet[2];            // ankle targets, body space, for LegPoseJob
   bool planted[2] = {true, true};
   float sole_h[2] = {0, 0};      // lowest sole height of each foot's target (m, 0 on the grass)
+  // A foot in the air reaching down for the grass (both feet up on a frame
+  // too slow for a flight): the pelvis comes down for it as for a planted one.
+  bool reaching[2] = {false, false};
 };
 
 // Ankle (field x, y, height) of a planted foot: sole centre (x, y), yaw,

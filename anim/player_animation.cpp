@@ -481,6 +481,17 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   float limit = pelvis_h;
   for (int i = 0; i < 2 && own_feet; ++i) {
     FootState& f = ctx.loco.feet[i];
+    // A foot in the air reaching down for the grass (footsteps: both feet
+    // up while the body is too slow for a flight) brings the pelvis down as
+    // a planted one does, but at the pelvis's own pace (kPelvisSink a
+    // frame): out of the leg's reach, it hung 15-20 cm up (issue 23,
+    // floating); dropped at once, the body bobbed and the planted feet of
+    // the frames after moved more.
+    if (lo.reaching[i] && !f.held && (act == nullptr || w <= 0)) {
+      const float lim = pelvis_limit(pelvis_rot, feet[i], i);
+      limit = std::min(limit, in.reset ? lim : std::max(lim, ctx.pelvis_height - kPelvisSink));
+      continue;
+    }
     if (!lo.planted[i] || !f.planted || f.held) continue;
     float lim = pelvis_limit(pelvis_rot, feet[i], i);
     for (int k = 0; k < 5 && lim < pelvis_h - 0.02f && f.pitch > -40.0f && feet[i].ankle_ms[0] < -0.05f; ++k) {

@@ -177,6 +177,10 @@ TEST(Footsteps, ABodyThatSlowsForACycleReachesDownWithAFoot) {
       if (f <= start || xs[static_cast<std::size_t>(f)] - xs[static_cast<std::size_t>(f - 1)] >= 2.0f * dt) continue;
       ++slow_frames;
       if (out.sole_h[0] > 0.10f && out.sole_h[1] > 0.10f) ++floating;
+      // The foot reaching down is told to the caller (the pelvis comes down for it).
+      if (!s.feet[0].planted && !s.feet[1].planted) {
+        EXPECT_NE(out.reaching[0], out.reaching[1]) << f;
+      }
     }
   }
   EXPECT_GT(slow_frames, 600);
