@@ -46,7 +46,9 @@ bool LegPoseJob::Run() {
     // to zero at a half turn instead of flipping sides.)
     const float rel = wrap_deg(f.yaw_deg - pelvis_yaw);
     const float fade = std::fabs(rel) > 90.0f ? (180.0f - std::fabs(rel)) / 90.0f : 1.0f;
-    const float twist = clampf(rel, -40.0f, 40.0f) * fade;
+    // (+ twist turns the knee towards -Z, the body's left: outward is - for
+    // the right leg and + for the left.)
+    const float twist = clampf(rel, -40.0f, 40.0f) * fade + (side == 0 ? -f.knee_out_deg : f.knee_out_deg);
     TwoBoneIKJob ik;
     ik.upper_length = dims::kThigh;
     ik.lower_length = dims::kShin;

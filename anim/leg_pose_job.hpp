@@ -14,6 +14,9 @@ struct FootTarget {
   float ankle_ms[3] = {0, 0, 0};  // ankle joint, body (model) space, m; [1] is height
   float yaw_deg = 0;              // sole yaw in body space (+ = toes turned left)
   float pitch_deg = 0;            // sole pitch (+ = toes up)
+  // The knee turned outward by this much more (deg of hip twist) for the
+  // same ankle: planted legs whose thighs come too close (issue 23).
+  float knee_out_deg = 0;
 };
 
 struct LegPoseJob {

@@ -262,8 +262,9 @@ float segment_distance(glm::vec3 p1, glm::vec3 q1, glm::vec3 p2, glm::vec3 q2) {
 // Legs keep out of each other: the thighs' and the shins' centre lines
 // (capsules of the boxes' half widths, plus a margin for the stream's
 // quantization) stay apart. A leg in the air is turned out at the hip
-// (abduction) until they are; planted legs are left as they stand.
-void separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]) {
+// (abduction) until they are. True when both legs are planted and still too
+// close: the caller turns their knees out (LegPoseJob's knee_out_deg).
+bool separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]) {
   constexpr float kThighGap = 0.07f + 0.015f, kShinGap = 0.05f + 0.015f, kFootGap = 0.05f + 0.015f;
   const glm::mat3 pelvis = joint_rotation(kYzx, &a[dof::kPelvis]);
   for (int it = 0; it < 3; ++it) {
@@ -285,13 +286,14 @@ void separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]) {
     const float feet = segment_distance(heel[0], toe[0], heel[1], toe[1]);
     const float need = std::max({(kThighGap - thighs) / 0.3f, (kShinGap - shins) / 0.65f,
                                  (kFootGap - feet) / 0.85f});  // rad of abduction
-    if (need <= 0) return;
+    if (need <= 0) return false;
     const int i = !planted[0] ? 0 : !planted[1] ? 1 : -1;
-    if (i < 0) return;
+    if (i < 0) return true;
     const int h = i == 0 ? dof::kRHip : dof::kLHip;
     const float turn = std::min(need / kDeg + 1.0f, 25.0f);
     a[static_cast<std::size_t>(h + 1)] += i == 0 ? -turn : turn;  // right abducts towards -X, left towards +X
   }
+  return planted[0] || planted[1];  // (with a leg in the air, the last turn is not checked)
 }
 
 }  // namespace
@@ -524,7 +526,15 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     again = true;
   }
   if (again) legs.Run();
-  if (own_feet) separate_legs(a, pelvis_h, lo.planted);
+  // Still too close with a leg planted: the planted knees turn out over the
+  // same feet (and a leg in the air is turned out again).
+  if (own_feet && separate_legs(a, pelvis_h, lo.planted)) {
+    for (float out : {10.0f, 20.0f, 30.0f}) {
+      for (int i = 0; i < 2; ++i) legs.feet[i].knee_out_deg = lo.planted[i] ? out : 0.0f;
+      legs.Run();
+      if (!separate_legs(a, pelvis_h, lo.planted)) break;
+    }
+  }
   // An ankle never rests against its limits: a joint held at its stop looks
   // locked (issue 23). In the air the sole only tilts a little further.
   for (int i = 0; i < 2; ++i) {

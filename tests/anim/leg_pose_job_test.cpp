@@ -42,6 +42,35 @@ TEST(LegPoseJob, PutsBothAnklesOnTheirTargetsWithTheSolesLevel) {
   }
 }
 
+// knee_out_deg turns each knee outward (right towards +Z, left towards -Z)
+// over the same ankle: planted legs whose thighs came too close (issue 23).
+TEST(LegPoseJob, KneesTurnOutOverTheSameAnkles) {
+  const SkeletonDef& s = human_skeleton();
+  auto solve = [&](float out, std::vector<glm::mat4>& m) {
+    std::array<float, kMaxDof> a{};
+    LegPoseJob job;
+    job.pelvis_height = 0.88f;  // knees bent: the knee's direction shows
+    job.feet[0].ankle_ms[0] = 0.05f; job.feet[0].ankle_ms[1] = 0.08f; job.feet[0].ankle_ms[2] = 0.06f;
+    job.feet[1].ankle_ms[0] = 0.05f; job.feet[1].ankle_ms[1] = 0.08f; job.feet[1].ankle_ms[2] = -0.06f;
+    job.feet[0].knee_out_deg = job.feet[1].knee_out_deg = out;
+    job.angles = std::span<float>(a.data(), a.size());
+    ASSERT_TRUE(job.Run());
+    m.assign(s.joints.size(), glm::mat4(1.0f));
+    LocalToModelJob fk{&s, a, glm::vec3(0, 0.88f, 0), m};
+    ASSERT_TRUE(fk.Run());
+  };
+  std::vector<glm::mat4> straight, out;
+  solve(0, straight);
+  solve(20, out);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(out[kRFoot][3][c], straight[kRFoot][3][c], 1e-3f) << c;
+    EXPECT_NEAR(out[kLFoot][3][c], straight[kLFoot][3][c], 1e-3f) << c;
+  }
+  // Knees: the shins' origins.
+  EXPECT_GT(out[kRShin][3].z, straight[kRShin][3].z + 0.02f);
+  EXPECT_LT(out[kLShin][3].z, straight[kLShin][3].z - 0.02f);
+}
+
 TEST(LegPoseJob, ClampsUnreachableFeetWithoutNaN) {
   std::array<float, kMaxDof> a{};
   LegPoseJob job;
