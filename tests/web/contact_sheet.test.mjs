@@ -19,10 +19,10 @@
 // (exit 77, ctest's SKIP_RETURN_CODE).
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn, spawnSync } from 'node:child_process';
+import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { launchBrowser, RCG, REPO, waitFor, WEB_DIR } from './harness.mjs';
+import { launchBrowser, RCG, REPO, staticServer, waitFor, WEB_DIR } from './harness.mjs';
 
 if (!existsSync(path.join(WEB_DIR, 'wasm', 'matchcast-log.wasm'))) {
   console.log('SKIPPED: web/wasm/ not built (scripts/build-wasm.sh)');
@@ -33,24 +33,6 @@ const SHEET_DIR = process.env.MATCHCAST_SHEET_DIR ?? path.join(REPO, 'test-outpu
 const CELLS = 20;          // one second of 20 Hz frames
 const VIEW_PX = 640;       // the page's viewport (square: the close-up's 38 deg)
 const CELL_W = 240, CELL_H = 420;  // each cell: the part of the picture around the player, at full size
-
-// python3 -m http.server on a free port: resolves { url, stop() }.
-function staticServer(dir) {
-  const proc = spawn('python3', ['-u', '-m', 'http.server', '--bind', '127.0.0.1', '-d', dir, '0'],
-    { stdio: ['ignore', 'pipe', 'pipe'] });
-  return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => { proc.kill('SIGKILL'); reject(new Error('http.server did not start')); }, 15000);
-    let out = '';
-    proc.stdout.on('data', (d) => {
-      out += d;
-      const m = /port (\d+)/.exec(out);
-      if (!m) return;
-      clearTimeout(timer);
-      resolve({ url: `http://127.0.0.1:${m[1]}/`, stop: () => proc.kill('SIGTERM') });
-    });
-    proc.on('exit', (code) => { clearTimeout(timer); reject(new Error(`http.server exited ${code}`)); });
-  });
-}
 
 // The tool's rows: "sprint from seq 8905, right 10; kick from seq 44, left 6,
 // contact in cell 10; turn from seq 100, right 10" -> [{ name, seq, side, unum }].

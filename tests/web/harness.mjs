@@ -57,6 +57,25 @@ export function stopServer(proc, timeoutMs = 5000) {
   });
 }
 
+// `dir` served as a static site (python3 -m http.server, no Matchcast
+// server) on a free loopback port: resolves { url, stop() }.
+export function staticServer(dir) {
+  const proc = spawn('python3', ['-u', '-m', 'http.server', '--bind', '127.0.0.1', '-d', dir, '0'],
+    { stdio: ['ignore', 'pipe', 'pipe'] });
+  return new Promise((resolve, reject) => {
+    const timer = setTimeout(() => { proc.kill('SIGKILL'); reject(new Error('http.server did not start')); }, 15000);
+    let out = '';
+    proc.stdout.on('data', (d) => {
+      out += d;
+      const m = /port (\d+)/.exec(out);
+      if (!m) return;
+      clearTimeout(timer);
+      resolve({ url: `http://127.0.0.1:${m[1]}/`, stop: () => proc.kill('SIGTERM') });
+    });
+    proc.on('exit', (code) => { clearTimeout(timer); reject(new Error(`http.server exited ${code}`)); });
+  });
+}
+
 export async function launchBrowser() {
   return chromium.launch({
     executablePath: CHROMIUM,

@@ -17,12 +17,11 @@
 // alone).
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { gunzipSync, constants as zconst } from 'node:zlib';
-import { launchBrowser, REPO, RCG, shot, stats, waitFor, WEB_DIR } from './harness.mjs';
+import { launchBrowser, REPO, RCG, shot, staticServer, stats, waitFor, WEB_DIR } from './harness.mjs';
 
 if (!existsSync(path.join(WEB_DIR, 'wasm', 'matchcast-log.wasm'))) {
   console.log('SKIPPED: web/wasm/ not built (scripts/build-wasm.sh)');
@@ -33,24 +32,6 @@ const ALL_MS = Number(process.env.MATCHCAST_LOCAL_ALL_MS ?? 60000);
 const GEN = path.join(REPO, 'tests', 'data', 'rcg', 'generated');
 const V3 = path.join(GEN, 'gen19-v3-20261122025631-Alpha_0-vs-Beta_1.rcg.gz');
 const JSONLOG = path.join(GEN, 'gen19-json-20261122030023-Alpha_1-vs-Beta_1.rcg.gz');
-
-// python3 -m http.server on a free port: resolves { url, stop() }.
-function staticServer(dir) {
-  const proc = spawn('python3', ['-u', '-m', 'http.server', '--bind', '127.0.0.1', '-d', dir, '0'],
-    { stdio: ['ignore', 'pipe', 'pipe'] });
-  return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => { proc.kill('SIGKILL'); reject(new Error('http.server did not start')); }, 15000);
-    let out = '';
-    proc.stdout.on('data', (d) => {
-      out += d;
-      const m = /port (\d+)/.exec(out);
-      if (!m) return;
-      clearTimeout(timer);
-      resolve({ url: `http://127.0.0.1:${m[1]}/`, stop: () => proc.kill('SIGTERM') });
-    });
-    proc.on('exit', (code) => { clearTimeout(timer); reject(new Error(`http.server exited ${code}`)); });
-  });
-}
 
 // The n-th show of a text log: { 'l1': [x, y], ..., ball: [x, y] }.
 function showAt(logText, index) {
