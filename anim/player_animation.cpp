@@ -11,6 +11,7 @@
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/leg_pose_job.hpp"
+#include "anim/limb_clearance.hpp"
 #include "anim/local_to_model_job.hpp"
 #include "anim/mocap_walk_layer.hpp"
 #include "anim/portable_math.hpp"
@@ -88,99 +89,6 @@ void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<flo
   }
 }
 
-// Signed distance (m) from a point to a box given in the foot's local space.
-float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards) {
-  const glm::vec3 c(seg.center[0], seg.center[1], seg.center[2]);
-  const glm::vec3 h(0.5f * seg.size[0], 0.5f * seg.size[1], 0.5f * seg.size[2]);
-  const glm::vec3 d = p - c;
-  const glm::vec3 q = glm::abs(d) - h;
-  const glm::vec3 out = glm::max(q, glm::vec3(0.0f));
-  const float outside = std::sqrt(glm::dot(out, out));
-  const float inside = std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f);
-  if (towards != nullptr) {
-    // From the box's nearest surface point towards p.
-    glm::vec3 n(0.0f);
-    if (outside > 1e-6f) {
-      for (int i = 0; i < 3; ++i) n[i] = q[i] > 0 ? (d[i] > 0 ? q[i] : -q[i]) : 0.0f;
-      n /= outside;
-    } else {
-      const int i = q.x >= q.y && q.x >= q.z ? 0 : q.y >= q.z ? 1 : 2;
-      n[i] = d[i] >= 0 ? 1.0f : -1.0f;
-    }
-    *towards = n;
-  }
-  return outside + inside;
-}
-
-// A hand never sinks into its own side's thigh. A leg splayed sideways (a
-// quick turn, a lateral lunge) or swinging forward past a hand swinging
-// back would pass through it; instead the arm is lifted away from the body
-// (shoulder abduction) a few degrees at a time until the hand's box is 6 cm
-// clear of the thigh's, as a person moves the arm out of the way. The 6 cm
-// keep them apart in the clients' blend between two frames as well: of the
-// two full games' frames drawn at 60 Hz, 1 cm left 40 and 40 with a hand
-// more than 2 cm inside, 3 cm 10 and 4, 5 cm 0 and 1, 6 cm none.
-void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a) {
-  constexpr float kClearM = -0.06f;  // the hand's deepest point at least 6 cm outside the thigh
-  constexpr std::uint32_t kJoints = (1u << kPelvis) | (1u << kTorso) | (1u << kRUpperArm) | (1u << kRLowerArm) |
-                                    (1u << kRHand) | (1u << kLUpperArm) | (1u << kLLowerArm) | (1u << kLHand) |
-                                    (1u << kRThigh) | (1u << kLThigh);
-  std::array<glm::mat4, kHumanJointCount> m;
-  auto pose = [&] {
-    LocalToModelJob fk{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0.0f, 1.0f, 0.0f), m};
-    fk.joint_mask = kJoints;
-    return fk.Run();
-  };
-  if (!pose()) return;
-  auto half_diagonal = [](const Segment& sg) { return 0.5f * glm::length(glm::vec3(sg.size[0], sg.size[1], sg.size[2])); };
-  for (int side = 0; side < 2; ++side) {
-    const int hand = side == 0 ? kRHand : kLHand, thigh = side == 0 ? kRThigh : kLThigh;
-    const auto abduct = static_cast<std::size_t>((side == 0 ? dof::kRShoulder : dof::kLShoulder) + 1);
-    const float outward = side == 0 ? -1.0f : 1.0f;  // the shoulder's x dof away from the body
-    const Segment& hs = skel.joints[static_cast<std::size_t>(hand)].segment;
-    const Segment& ts = skel.joints[static_cast<std::size_t>(thigh)].segment;
-    const auto& lim = skel.joints[static_cast<std::size_t>(side == 0 ? kRUpperArm : kLUpperArm)].limits[1];
-    const glm::vec3 hc(hs.center[0], hs.center[1], hs.center[2]);
-    const glm::vec3 hh(0.5f * hs.size[0], 0.5f * hs.size[1], 0.5f * hs.size[2]);
-    const float hand_radius = half_diagonal(hs);
-    for (int it = 0; it < 6; ++it) {
-      if (it > 0 && !pose()) return;
-      const glm::mat4& th = m[static_cast<std::size_t>(thigh)];
-      const glm::mat4& hm = m[static_cast<std::size_t>(hand)];
-      // The hand's box in the thigh's space: its centre and half axes.
-      const glm::mat3 to_thigh = glm::transpose(glm::mat3(th));
-      const glm::vec3 c = to_thigh * (glm::vec3(hm * glm::vec4(hc, 1.0f)) - glm::vec3(th[3]));
-      // Most frames: the hand's centre is further from the thigh's box than
-      // its own half diagonal and the clearance.
-      glm::vec3 n;
-      const float centre_out = box_distance(ts, c, &n);
-      if (centre_out > hand_radius - kClearM) break;
-      const glm::mat3 axes = to_thigh * glm::mat3(hm);
-      const glm::vec3 ax = axes[0] * hh.x, ay = axes[1] * hh.y, az = axes[2] * hh.z;
-      // Many more: the plane through the thigh box's point nearest the
-      // hand's centre, facing it, has the whole thigh box behind it (the
-      // box is convex); no point of the hand's box is nearer that plane
-      // than the centre's distance less the box's reach along its normal.
-      // When that is the clearance and a margin far above float rounding,
-      // every sample below is clear too and the loop would stop at once:
-      // the same pose, without its 45 distances (issue 23: the animation
-      // of a full game within 1 s).
-      const float reach = std::fabs(glm::dot(ax, n)) + std::fabs(glm::dot(ay, n)) + std::fabs(glm::dot(az, n));
-      if (centre_out - reach > -kClearM + 1e-4f) break;
-      float depth = -1.0f;  // the deepest sample point: > 0 inside, < 0 its distance outside
-      for (float sx : {-1.0f, 0.0f, 1.0f})
-        for (float sy : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f})
-          for (float sz : {-1.0f, 0.0f, 1.0f})
-            depth = std::max(depth, -box_distance(ts, c + sx * ax + sy * ay + sz * az, nullptr));
-      if (depth <= kClearM) break;
-      // The hand is ~0.6 m from the shoulder: the angle that moves it
-      // `depth` out.
-      const float step = std::max(0.5f, (depth - kClearM) / 0.6f * 57.2958f);
-      a[abduct] = std::clamp(a[abduct] + outward * step, lim[0], lim[1]);
-    }
-  }
-}
-
 // Moves kicking foot `k` so that its box lies kContactGap off the ball:
 // up to three corrections of the ankle target along the contact normal,
 // each solved again by LegPoseJob. `body` places the ball; `a` holds the pose.
@@ -244,60 +152,6 @@ void touch_ball(const SkeletonDef& skel, const BodyFrame& body, float& pelvis_h,
     legs.feet[k].ankle_ms[1] -= low;
     solve();
   }
-}
-
-// Closest distance between segments p1q1 and p2q2 (Ericson, Real-Time
-// Collision Detection, 5.1.9).
-float segment_distance(glm::vec3 p1, glm::vec3 q1, glm::vec3 p2, glm::vec3 q2) {
-  const glm::vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
-  const float c = glm::dot(d1, r), b = glm::dot(d1, d2), denom = a * e - b * b;
-  float s = denom > 1e-9f ? clampf((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
-  float t = e > 1e-9f ? (b * s + f) / e : 0.0f;
-  if (t < 0) { t = 0; s = a > 1e-9f ? clampf(-c / a, 0.0f, 1.0f) : 0.0f; }
-  else if (t > 1) { t = 1; s = a > 1e-9f ? clampf((b - c) / a, 0.0f, 1.0f) : 0.0f; }
-  return glm::length((p1 + d1 * s) - (p2 + d2 * t));
-}
-
-// Legs keep out of each other: the thighs' and the shins' centre lines
-// (capsules of the boxes' half widths, plus a margin for the stream's
-// quantization) stay apart. A leg in the air is turned out at the hip
-// (abduction) until they are, in up to three turns. True when a leg is
-// planted and the legs were too close (still, or before the last turn, which
-// is not checked again): the caller then turns the planted knees out
-// (LegPoseJob's knee_out_deg). Checking the last turn too gave the same
-// figures at 20 Hz and 13 more thighs too close at 60 Hz on game 1 (790 ->
-// 803): the extra turn leaves a margin for the clients' blend.
-bool separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]) {
-  constexpr float kThighGap = 0.07f + 0.015f, kShinGap = 0.05f + 0.015f, kFootGap = 0.05f + 0.015f;
-  const glm::mat3 pelvis = joint_rotation(kYzx, &a[dof::kPelvis]);
-  for (int it = 0; it < 3; ++it) {
-    glm::vec3 hip[2], knee[2], ankle[2], heel[2], toe[2];
-    for (int i = 0; i < 2; ++i) {
-      const int h = i == 0 ? dof::kRHip : dof::kLHip;
-      const glm::mat3 thigh = pelvis * joint_rotation(kZxy, &a[static_cast<std::size_t>(h)]);
-      const glm::mat3 shin = thigh * joint_rotation(kZ, &a[static_cast<std::size_t>(h + 3)]);
-      const glm::mat3 foot = shin * joint_rotation(kZx, &a[static_cast<std::size_t>(h + 4)]);
-      hip[i] = glm::vec3(0, pelvis_h, 0) +
-               pelvis * glm::vec3(0, -dims::kHipDrop, i == 0 ? dims::kHipHalfWidth : -dims::kHipHalfWidth);
-      knee[i] = hip[i] + thigh * glm::vec3(0, -dims::kThigh, 0);
-      ankle[i] = knee[i] + shin * glm::vec3(0, -dims::kShin, 0);
-      heel[i] = ankle[i] + foot * glm::vec3(-dims::kFootBack, -0.5f * dims::kAnkleHeight, 0);
-      toe[i] = ankle[i] + foot * glm::vec3(dims::kFootFront, -0.5f * dims::kAnkleHeight, 0);
-    }
-    const float thighs = segment_distance(hip[0], knee[0], hip[1], knee[1]);
-    const float shins = segment_distance(knee[0], ankle[0], knee[1], ankle[1]);
-    const float feet = segment_distance(heel[0], toe[0], heel[1], toe[1]);
-    const float need = std::max({(kThighGap - thighs) / 0.3f, (kShinGap - shins) / 0.65f,
-                                 (kFootGap - feet) / 0.85f});  // rad of abduction
-    if (need <= 0) return false;
-    const int i = !planted[0] ? 0 : !planted[1] ? 1 : -1;
-    if (i < 0) return true;
-    const int h = i == 0 ? dof::kRHip : dof::kLHip;
-    const float turn = std::min(need / kDeg + 1.0f, 25.0f);
-    a[static_cast<std::size_t>(h + 1)] += i == 0 ? -turn : turn;  // right abducts towards -X, left towards +X
-  }
-  return planted[0] || planted[1];
 }
 
 }  // namespace
