@@ -87,6 +87,9 @@ describe('the page draws the close-up contact sheet', { timeout: 600000 }, () =>
         if (el !== canvas && !el.contains(canvas)) el.style.visibility = 'hidden';
     });
     await page.evaluate(() => window.matchcast.setCamera('closeup'));
+    // The hook refuses what is not a stream position.
+    for (const bad of ['12', NaN, Infinity, null, {}])
+      assert.equal(await page.evaluate((b) => window.matchcast.pauseAt(b), bad), false, String(bad));
 
     const cells = [];   // per row: data URLs
     for (const row of rows) {

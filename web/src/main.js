@@ -447,8 +447,9 @@ window.matchcast = Object.freeze({
   toggle: (name) => app.toggle(name),
   // Holds the picture still at a stream position (seq; a fraction draws
   // the clients' blend in between), as the replay bar's pause would: the
-  // close-up contact sheet draws one frame at a time (issue 23).
-  pauseAt: (seq) => timeshift.enter(seq, true),
+  // close-up contact sheet draws one frame at a time (issue 23). Anything
+  // but a finite number is refused (false), never a NaN playhead.
+  pauseAt: (seq) => typeof seq === 'number' && Number.isFinite(seq) && timeshift.enter(seq, true),
   // Where a player's chest is on the screen (CSS px), for click tests.
   screenOf: (key) => {
     const rig = players?.get(key);
