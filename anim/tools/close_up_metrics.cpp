@@ -222,8 +222,8 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
               ++bd_n[c];
             }
             if (slides_over > 0 && v > slides_over)
-              std::fprintf(stderr, "slide %.2f m/s seq %u+%d slot %zu foot %d root %.1f m/s low %.3f -> %.3f\n", v, f.seq, k, p,
-                           s, root_v, fa.lowest, fb.lowest);
+              std::fprintf(stderr, "slide %.2f m/s seq %u+%d slot %zu foot %d root %.1f m/s low %.3f -> %.3f rate %d\n", v, f.seq, k, p,
+                           s, root_v, fa.lowest, fb.lowest, m);
             if (v > 0.5) ++r.grounded_over_half[static_cast<std::size_t>(band)];
             if (v > r.grounded_worst_mps) {
               r.grounded_worst_mps = v;

@@ -267,6 +267,10 @@ int main(int argc, char** argv) {
                     p.angles[31], p.angles[32], p.angles[33], p.angles[28], p.angles[29], p.angles[34], p.angles[35]);
       }
     }
+    if (std::getenv("MATCHCAST_ACTIONS_DUMP") != nullptr)  // debug aid: every player-frame's action, to join with the slides' lists
+      for (std::size_t i = 0; i < a.frames.size(); ++i)
+        for (std::size_t s = 0; s < a.infos[i].players.size(); ++s)
+          std::fprintf(stderr, "act %u %zu %s\n", a.frames[i].seq, s, action_name(a.infos[i].players[s].action));
     if (!pictured) pictured = write_picture(a, png);
   }
   std::printf("%s\n", all_ok ? "ALL TARGETS HOLD" : "SOME TARGETS FAIL");
