@@ -100,6 +100,8 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
   s.foot_pitch[k] = pitch;
   s.planted[k] = tau >= m.end_s - 1e-4f;
   s.foot_weight[k] = s.weight;
+  s.kick_foot = k;
+  s.to_contact_s = -tau;
   // The support foot is down beside the ball from just before contact; it
   // leaves locomotion for its spot only in the 0.1 s before it plants (a long
   // look-ahead does not pin it to a spot the running body has not reached).
@@ -113,6 +115,7 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
   s.foot_yaw[sup] = heading;
   s.foot_pitch[sup] = 0;
   s.planted[sup] = tau >= plant_at - 1e-4f;
+  s.support_lands = s.planted[sup] && tau < plant_at + 0.05f - 1e-4f;
   // After contact, once the 2D player has run on past the support foot's
   // reach, locomotion takes that foot back (it steps off, it is not dragged).
   if (tau > 0 && pm::hypot(m.support_x - root_x, m.support_y - root_y) > 0.45f) {
@@ -125,7 +128,6 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
     s.root_dx = m.lunge_x;
     s.root_dy = m.lunge_y;
     s.contact = true;
-    s.kick_foot = k;
     s.ball_x = m.ball_x;
     s.ball_y = m.ball_y;
     s.ball_h = m.ball_radius;

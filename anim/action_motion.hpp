@@ -54,7 +54,9 @@ struct ActionSample {
   // Kick: this is the contact frame; the kicking foot's box must touch the
   // ball, whose centre is (ball_x, ball_y, ball_h) (field m) and radius ball_r.
   bool contact = false;
-  int kick_foot = 0;  // [0] right, [1] left
+  int kick_foot = 0;  // Kick: the kicking foot on every frame of the kick, [0] right, [1] left
+  float to_contact_s = 0;  // Kick: time still to go to the contact (s; negative after it)
+  bool support_lands = false;  // Kick: the support foot plants on its spot this frame
   float ball_x = 0, ball_y = 0, ball_h = 0.085f, ball_r = 0.085f;
   float pelvis_height = 0.9f;
   // Angles blended over locomotion's with `weight`: all dofs (tackle, catch,

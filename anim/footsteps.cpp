@@ -14,6 +14,7 @@ constexpr float kSide[2] = {1.0f, -1.0f};  // +1 right (+Z), -1 left
 // The sole (bottom of the foot's box): centre ahead of the ankle, half length.
 constexpr float kSoleCentre = 0.5f * (dims::kFootFront - dims::kFootBack);  // 0.06
 constexpr float kSettleSwingS = 0.32f;  // s, a settling step's swing
+constexpr float kSwingPastHipM = 0.55f;  // m a frame, a swinging ankle relative to the root (11 m/s)
 constexpr float kApproachSlope = 0.4f;  // m up per m still to travel, coming down
 constexpr float kPassLength = 0.32f;    // m along the body within which two feet are side by side
 constexpr float kMaxHeelRise = -35.0f;  // deg, the most a planted foot rolls up on its toes
@@ -399,6 +400,16 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
       // that jumps past the slowing body.
       const float max_step = coming_down ? 0.45f : 0.85f;
       if (dn > max_step) { dx *= max_step / dn; dy *= max_step / dn; }
+      // Nor faster than a leg swings past the hip: at most kSwingPastHipM a
+      // frame relative to the root. A landing spot re-planned far off in a
+      // turn made the ankle jump 0.8 m past a pelvis that moved 0.2; the
+      // foot now swings on to it (the extra frames below).
+      const float pdx = in.x - s.x, pdy = in.y - s.y;
+      const float rx = dx - pdx, ry = dy - pdy, rn = pm::hypot(rx, ry);
+      if (rn > kSwingPastHipM) {
+        dx = pdx + rx * kSwingPastHipM / rn;
+        dy = pdy + ry * kSwingPastHipM / rn;
+      }
       f.cx += dx;
       f.cy += dy;
       // It passes the other foot on its own side, a sole's width clear.

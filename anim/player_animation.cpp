@@ -29,6 +29,11 @@ constexpr float kPelvisRise = 0.03f, kPelvisSink = 0.05f;
 // An ankle is kept this far inside its dorsiflexion limit by raising the heel.
 constexpr float kAnkleMargin = 3.0f;
 constexpr float kAnkleDorsiflexion = 35.0f;  // the ankles' limit (human_skeleton)
+// The kicking foot moves freely (no ankle travel limit) this long before its contact (s).
+constexpr float kStrikeFreeS = 0.06f;
+// A kick's support foot held up to this far (m, and this high) from its spot
+// as it plants is planted where it is.
+constexpr float kSupportReanchorM = 0.4f;
 
 // Highest pelvis at which the ankle of `t` (body space) stays within reach of
 // its hip, for a pelvis rotated by `pelvis` (pelvis joint on the body's Y axis).
@@ -384,6 +389,23 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     again = true;
   }
   if (again) legs.Run();
+  // No ankle jumps: a target further than an ankle moves in a frame is
+  // pulled back, and a planted foot so pulled is not on its spot this frame.
+  if (!in.reset && (act == nullptr || !act->whole_body || w <= 0)) {
+    // The kicking foot is left free from the frame before its contact to
+    // the contact: held back there, it could not reach the ball in time.
+    const bool striking = act != nullptr && act->feet && act->foot_weight[act->kick_foot] > 0 &&
+                          act->to_contact_s < kStrikeFreeS && act->to_contact_s > -0.02f;
+    const bool skip[2] = {striking && act->kick_foot == 0, striking && act->kick_foot == 1};
+    // A kick's support foot held short of its spot is on its way there, in
+    // the air: at the grass's height it slid the rest of the way.
+    bool lift[2] = {false, false};
+    if (act != nullptr && act->feet && w > 0)
+      for (int i = 0; i < 2; ++i) lift[i] = i != act->kick_foot && act->foot_weight[i] > 0;
+    const int pulled = limit_ankle_travel(limits_from, body, ctx.ankles, skip, lift, legs);
+    for (int i = 0; i < 2; ++i)
+      if ((pulled & (1 << i)) != 0) lo.planted[i] = false;
+  }
   // Still too close with a leg planted: the planted knees turn out over the
   // same feet (and a leg in the air is turned out again).
   if (own_feet && separate_legs(a, pelvis_h, lo.planted)) {
@@ -405,6 +427,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       const auto k = static_cast<std::size_t>(d);
       a[k] += (act->angles[k] - a[k]) * w;
     }
+    if (!in.reset) limit_ankle_travel(limits_from, body, pelvis_h, ctx.ankles, ctx.last_angles, a);
   }
   // Nothing goes under the grass: a sole that the joint limits or the speed
   // limit left pitched into it turns level at the ankle, and what is still
@@ -412,6 +435,10 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // limit held short) lifts the body: it rests on the grass. Once before a
   // kick's contact is made (so it is made where the body is) and once after
   // the joint speed limit.
+  // The ankles (body space) of the pose as rest_on_grass last left it: the
+  // ankle travel limit's "last frame" (an ankle's own dofs do not move it).
+  glm::vec3 rested_ankle[2];
+  bool rested = false;
   auto rest_on_grass = [&](float leeway_deg) {
     const bool whole = act != nullptr && act->whole_body && w > 0;
     std::array<glm::mat4, kHumanJointCount> m;
@@ -427,7 +454,11 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
                    in.reset ? -INFINITY : std::max(last - kMaxLegStepDeg, now - leeway_deg),
                    in.reset ? INFINITY : std::min(last + kMaxLegStepDeg, now + leeway_deg));
       }
-      pelvis_h += std::max(0.0f, -lowest_point_ms(limits_from, m, whole ? kAllJoints : kFeetJoints));
+      const float lift = std::max(0.0f, -lowest_point_ms(limits_from, m, whole ? kAllJoints : kFeetJoints));
+      pelvis_h += lift;
+      rested_ankle[0] = glm::vec3(m[kRFoot][3]) + glm::vec3(0, lift, 0);
+      rested_ankle[1] = glm::vec3(m[kLFoot][3]) + glm::vec3(0, lift, 0);
+      rested = true;
     }
   };
   clamp_to_limits(limits_from, a);
@@ -458,6 +489,28 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   ctx.last_planted[0] = lo.planted[0];
   ctx.last_planted[1] = lo.planted[1];
   ctx.pelvis_height = pelvis_h;
+  if (rested) {
+    for (int i = 0; i < 2; ++i) {
+      body.to_field(rested_ankle[i].x, rested_ankle[i].z, ctx.ankles.ankle[i].x, ctx.ankles.ankle[i].y);
+      ctx.ankles.ankle[i].z = rested_ankle[i].y;
+    }
+  } else {
+    ankle_positions(limits_from, a, pelvis_h, body, ctx.ankles.ankle);
+  }
+  ctx.ankles.pelvis = glm::vec3(px, py, pelvis_h);
+  ctx.ankles.valid = true;
+  // A kick's support foot that the limits held short of its spot as it
+  // plants stays where it came down: taken on to the spot on the next
+  // frame, it slid there over the grass.
+  if (act != nullptr && act->feet && act->support_lands && ctx.motion_active) {
+    const int sup = 1 - act->kick_foot;
+    const glm::vec3& at = ctx.ankles.ankle[sup];
+    const float off = pm::hypot(at.x - act->foot_x[sup], at.y - act->foot_y[sup]);
+    if (off > 0.01f && off < kSupportReanchorM && at.z < dims::kAnkleHeight + kSupportReanchorM) {
+      ctx.motion.support_x = at.x;
+      ctx.motion.support_y = at.y;
+    }
+  }
   for (int d = 0; d < dof::kCount; ++d) ctx.last_angles[static_cast<std::size_t>(d)] = a[static_cast<std::size_t>(d)];
   if (planted != nullptr) { planted[0] = lo.planted[0]; planted[1] = lo.planted[1]; }
 

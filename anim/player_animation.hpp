@@ -22,6 +22,7 @@
 #include <span>
 
 #include "anim/action_motion.hpp"
+#include "anim/ankle_travel.hpp"
 #include "anim/anim_events.hpp"
 #include "anim/classifier.hpp"
 #include "anim/footsteps.hpp"
@@ -43,6 +44,7 @@ struct PlayerAnim {
   std::array<float, dof::kRHip> blend_x{}, blend_v{}, last_layer{};
   bool was_in_action = false;
   bool last_planted[2] = {false, false};
+  AnkleTravel ankles;  // last frame's ankles and pelvis (ankle_travel.hpp)
   // The action playing or about to play (kick_planner.hpp), and its bookkeeping.
   ActionMotion motion;
   bool motion_active = false;

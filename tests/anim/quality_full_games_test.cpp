@@ -21,7 +21,8 @@ namespace {
 
 // Upper bounds (lower for the kick's depth), one set per drawing rate.
 struct Bounds {
-  double stand_mps, moving_band_mps;  // grounded-foot mean: standing, worst moving band
+  // Grounded-foot mean: standing, the worst band up to 9 m/s, above 9 m/s.
+  double stand_mps, moving_band_mps, sprint_band_mps;
   double kick_p95_m, kick_max_m;
   long kicks_inside;
   double leg_deg, arm_deg, trunk_deg, head_deg;
@@ -85,17 +86,35 @@ struct Bounds {
 // 26/9/14 -> 18/9/13 and 28/13/17 -> 17/11/13 at 20 Hz (60 Hz 823/125/176 ->
 // 790/116/175, 773/157/200 -> 745/149/187); bounds 45/25/22 -> 20/12/15 and
 // 850/160/205 -> 800/155/190.
-constexpr Bounds kAt20Hz{0.20, 1.1, 0.02, 0.03, 0, 60, 45, 45, 45, 600, 20, 12, 15, 0, 50, 0.02, 4.5,
+// An ankle moves at most 0.5 m a frame relative to the pelvis and 0.92 m
+// over the grass (anim/ankle_travel.hpp, 2026-11-27; a swing at most 0.55 m
+// past the hip in anim/footsteps.cpp), and a kick's support foot held short
+// as it plants is planted where it came down: ankle pops 589/445 -> 27/26
+// at 20 Hz (60 Hz 2203/1684 -> 126/124), bounds 600 -> 30 and 2250 -> 130;
+// every band up to 9 m/s now meets the target at 20 Hz on both games
+// (8-9 m/s 0.61/0.41 -> 0.48/0.39). The trade: thighs / shins / feet too
+// close went 18/9/13 -> 19/15/15 and 17/11/13 -> 19/14/12 (bounds 20/12/15
+// -> 20/15/15; 60 Hz thighs 790 -> 803, bound 800 -> 810), and the 9+ m/s
+// band of game 1 (135 frame pairs; the worst a goalkeeper getting up from a dive
+// while the server carries him at 9 m/s) 1.09 -> 1.26 m/s, bound 1.1 ->
+// 1.3. The lowest point at 60 Hz rose, -0.097/-0.104 -> -0.063/-0.089 m:
+// bound -0.11 -> -0.095, and its worst band 4.25 -> 4.06 m/s: bound 4.3 -> 4.1
+// (anim/README.md). The bands up to 9 m/s are bounded apart from the
+// sprint band since then: issue 23's 0.5 m/s at 20 Hz (the 3-4 m/s band of
+// game 1 was 0.53 before the support foot's new spot), 1.7 at 60 Hz (8-9 m/s
+// 1.64/1.21).
+constexpr Bounds kAt20Hz{0.20, 0.5, 1.3, 0.02, 0.03, 0, 60, 45, 45, 45, 30, 20, 15, 15, 0, 50, 0.02, 4.5,
                          -0.02, 0.31};
-constexpr Bounds kAt60Hz{0.20, 4.3, 0.02, 0.03, 0, 60, 45, 45, 45, 2250, 800, 155, 190, 0, 150, 0.02, 4.5,
-                         -0.11, 0.31};
+constexpr Bounds kAt60Hz{0.20, 1.7, 4.1, 0.02, 0.03, 0, 60, 45, 45, 45, 130, 810, 155, 190, 0, 150, 0.02, 4.5,
+                         -0.095, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
   SCOPED_TRACE(what);
   EXPECT_LE(band_mean(r, 0), b.stand_mps);
   double worst = 0;
-  for (int band = 1; band < kSpeedBands; ++band) worst = std::max(worst, band_mean(r, band));
+  for (int band = 1; band + 1 < kSpeedBands; ++band) worst = std::max(worst, band_mean(r, band));
   EXPECT_LE(worst, b.moving_band_mps);
+  EXPECT_LE(band_mean(r, kSpeedBands - 1), b.sprint_band_mps);
   EXPECT_LE(r.kick_box_m.percentile(95), b.kick_p95_m);
   EXPECT_LE(r.kick_box_m.max(), b.kick_max_m);
   EXPECT_LE(r.kicks_inside, b.kicks_inside);

@@ -1,0 +1,57 @@
+// Ankles that do not pop (issue 23): between two frames an ankle moves at
+// most kAnklePastPelvisM relative to the pelvis and kAnkleWorldStepM over
+// the grass, whatever placed it (a swing re-planned in a turn, a kick's
+// follow-through handed back to the footsteps, a foot planted by a take-over).
+//
+// The joint speed limit (player_animation.hpp) bounds each joint, but three
+// hip dofs and a knee each turning within it still carry an ankle 0.8 m in
+// one frame: a viewer sees the foot jump. This bounds the ankle itself: a
+// target further off is pulled back along the way towards it, the leg is
+// solved again, and the foot gets there on the frames after. Human skeleton
+// only; no I/O.
+#pragma once
+
+#include <span>
+
+#include <glm/vec3.hpp>
+
+#include "anim/body_frame.hpp"
+#include "anim/leg_pose_job.hpp"
+#include "proto/skeleton.hpp"
+
+namespace mc::anim {
+
+// A sprinter's swinging foot passes the hip at up to about 10 m/s; the
+// issue's pop is 0.6 m a frame relative to the pelvis or 1 m over the grass.
+inline constexpr float kAnklePastPelvisM = 0.50f;
+inline constexpr float kAnkleWorldStepM = 0.92f;
+
+// Where the ankles and the pelvis were on the last frame (field x, y, height).
+struct AnkleTravel {
+  bool valid = false;
+  glm::vec3 ankle[2]{};  // [0] right, [1] left
+  glm::vec3 pelvis{};
+};
+
+// Field positions of both ankles for the pose `a` (deg) with the pelvis at
+// height `pelvis_h` in `body`.
+void ankle_positions(const SkeletonDef& skel, std::span<const float> a, float pelvis_h, const BodyFrame& body,
+                     glm::vec3 out[2]);
+
+// Pulls back the targets of the legs in `legs` (already solved into
+// legs.angles) whose ankles moved too far since `last`, and solves the legs
+// again. `skip[i]`: leave that foot as it is (a kick's contact). `lift[i]`:
+// a foot pulled back is on its way to a spot, so it is raised above the
+// grass by half the way it has still to go (up to 8 cm). Returns a bit per
+// foot pulled back (1 right, 2 left).
+int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, const AnkleTravel& last, const bool skip[2],
+                       const bool lift[2], LegPoseJob& legs);
+
+// The same bounds for a pose given as angles (a tackle's, a dive's): each
+// leg's change since `last_angles` is scaled down, by bisection, until its
+// ankle keeps within them (or the leg is held as it was). Returns a bit per
+// leg held back.
+int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, const AnkleTravel& last,
+                       std::span<const float> last_angles, std::span<float> a);
+
+}  // namespace mc::anim
