@@ -1,7 +1,9 @@
 #include "anim/ground_contact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include <glm/vec4.hpp>
 
@@ -27,6 +29,31 @@ float lowest_point_ms(const SkeletonDef& skeleton, std::span<const glm::mat4> mo
   for (std::size_t j = 0; j < n; ++j)
     if (j >= 32 || (mask & (1u << j)) != 0) lowest = std::min(lowest, segment_lowest_ms(skeleton.joints[j].segment, models[j]));
   return lowest;
+}
+
+float rest_on_grass(const SkeletonDef& skeleton, PlayerPose& pose, float tolerance_m) {
+  if (skeleton.joints.empty()) return 0;
+  // One transform per joint; the small array covers the human skeleton and
+  // any hello's of up to 32 joints without allocating.
+  std::array<glm::mat4, 32> small;
+  std::vector<glm::mat4> large;
+  std::span<glm::mat4> models(small.data(), small.size());
+  if (skeleton.joints.size() > small.size()) {
+    large.resize(skeleton.joints.size());
+    models = std::span<glm::mat4>(large);
+  } else {
+    models = models.first(skeleton.joints.size());
+  }
+  const auto dofs = static_cast<std::size_t>(std::clamp(skeleton.dof_count(), 0, kMaxDof));
+  // The root at the pose's height; its own rest offset is not added
+  // (proto/SPEC.md 4.1), which LocalToModelJob would.
+  const auto& off = skeleton.joints[0].offset_ls;
+  const glm::vec3 root(-off[0], pose.z - off[1], -off[2]);
+  LocalToModelJob fk{&skeleton, std::span<const float>(pose.angles.data(), dofs), root, models};
+  if (!fk.Run()) return 0;
+  const float lift = std::max(0.0f, -lowest_point_ms(skeleton, models) - tolerance_m);
+  pose.z += lift;
+  return lift;
 }
 
 float level_foot(const SkeletonDef& skeleton, std::span<glm::mat4> models, std::span<float> angles, int foot,

@@ -1,9 +1,10 @@
 // The lowest point of a posed body: the drawn segments (boxes and spheres of
 // the skeleton definition, proto/skeleton.hpp) after forward kinematics.
 //
-// Used twice: whole-body actions (tackle, catch, dive) rest the body on the
-// grass by raising the pelvis until nothing is under it, and the quality tool
-// reports how far any frame's body went below the grass.
+// Used three times: whole-body actions (tackle, catch, dive) rest the body on
+// the grass by raising the pelvis until nothing is under it, the quality tool
+// reports how far any frame's body went below the grass, and the clients
+// rest each pose they draw between two frames on it (rest_on_grass).
 #pragma once
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "anim/human_skeleton.hpp"
+#include "proto/pose_frame.hpp"
 #include "proto/skeleton.hpp"
 
 namespace mc::anim {
@@ -29,6 +31,14 @@ inline constexpr std::uint32_t kAllJoints = ~0u;
 inline constexpr std::uint32_t kFeetJoints = (1u << kRFoot) | (1u << kLFoot);
 inline constexpr std::uint32_t kLegJoints = (1u << kPelvis) | (1u << kRThigh) | (1u << kRShin) | (1u << kLThigh) |
                                             (1u << kLShin) | kFeetJoints;
+
+// What a client does to each pose it draws (issue 23; proto/SPEC.md, "Drawing
+// between frames"): blending two frames' angles can take a sole a few
+// centimetres under the grass between them, so the body is raised by what
+// lies deeper than `tolerance_m`. Returns the lift (m, 0 when nothing is
+// that deep). Any skeleton of the hello; the pose's root height changes.
+inline constexpr float kGrassToleranceM = 0.01f;
+float rest_on_grass(const SkeletonDef& skeleton, PlayerPose& pose, float tolerance_m = kGrassToleranceM);
 
 // Lowest point (model-space Y, m) of joint `j`'s own segment.
 float segment_lowest_ms(const Segment& segment, const glm::mat4& model);

@@ -287,6 +287,7 @@ int App::run_window() {
       const auto max = meta_.hello->server_params.find("stamina_max");
       fatigue_->apply(*frame_, dt, buffer_.track().stamina(),
                       max != meta_.hello->server_params.end() ? static_cast<float>(max->second) : 8000.0f);
+      rest_on_grass(meta_.hello->skeleton, *frame_);
       draw(*frame_, width, height, dt);
       ++drawn;
       skips += sample_->skipped;

@@ -114,7 +114,12 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
         blend_like_clients(frames[i], frames[i + 1], static_cast<float>(k) / static_cast<float>(m), dofs, drawn,
                            drawn_legs != DrawnLegs::AngleBlend ? &legs : nullptr);
         fp = &drawn;
+      } else if (m > 1) {
+        drawn = frames[i];
+        fp = &drawn;
       }
+      // At the drawing rate, every pose as a client draws it: rested on the grass.
+      if (m > 1) rest_like_clients(skel, drawn);
       const PoseFrame& f = *fp;
       ++r.frames;
       const double t = (static_cast<double>(i) + static_cast<double>(k) / m) * frame_s;
@@ -132,13 +137,17 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
         }
         ++r.player_frames;
         // Nothing under the grass.
+        float lowest_here = 0;
         for (std::size_t j = 0; j < skel.joints.size(); ++j) {
           const float low = segment_lowest_ms(skel.joints[j].segment, g.world[j]);
+          lowest_here = std::min(lowest_here, low);
           if (low < r.lowest_m) {
             r.lowest_m = low;
             r.lowest_where = who(f, k, m, pp, skel.joints[j].name.c_str());
           }
         }
+        if (slides_over > 0 && lowest_here < -0.02f)
+          std::fprintf(stderr, "under seq %u+%d slot %zu %.3f rate %d\n", f.seq, k, p, lowest_here, m);
         // Time at the limits.
         if (m == 1 || k == 0) {
           ++limit_frames;

@@ -103,10 +103,13 @@ struct Bounds {
 // sprint band since then: issue 23's 0.5 m/s at 20 Hz (the 3-4 m/s band of
 // game 1 was 0.53 before the support foot's new spot), 1.7 at 60 Hz (8-9 m/s
 // 1.64/1.21).
+// The lowest point at 60 Hz meets issue 23's target (-2 cm) since the clients
+// rest every pose they draw on the grass (proto/SPEC.md 4.7, anim::
+// rest_on_grass; 2026-11-27): -0.063/-0.089 -> -0.010/-0.010 m.
 constexpr Bounds kAt20Hz{0.20, 0.5, 1.3, 0.02, 0.03, 0, 60, 45, 45, 45, 30, 20, 15, 15, 0, 50, 0.02, 4.5,
                          -0.02, 0.31};
 constexpr Bounds kAt60Hz{0.20, 1.7, 4.1, 0.02, 0.03, 0, 60, 45, 45, 45, 130, 810, 155, 190, 0, 150, 0.02, 4.5,
-                         -0.095, 0.31};
+                         -0.02, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
   SCOPED_TRACE(what);

@@ -180,3 +180,59 @@ test('a tired player leans, swings his arms less, and rests his hands on his kne
   for (let t = 0; t < 60; t++) drop = g.apply('1:1', { x: -50, y: 0, state: 9 }, new Float32Array(n), 1, 1 / 60, { stoppage: true, ball: { x: 1, y: 1 } });
   assert.equal(drop, 0);
 });
+
+// Every drawn pose rests on the grass (web/src/model/ground.js, the same
+// rule as anim::rest_on_grass): checked against three.js's own forward
+// kinematics of the same joints, as scene/players.js builds them.
+test('a pose dipping under the grass is raised by what lies deeper than 1 cm', async () => {
+  const { lowestPoint, grassLift, GRASS_TOLERANCE_M } = await load('src/model/ground.js');
+  const THREE = await import(pathToFileURL(path.join(WEB, 'node_modules/three/build/three.module.js')).href);
+  const human = normalizeSkeleton(readJson('data/human_skeleton.json'));
+  const AX = { x: new THREE.Vector3(1, 0, 0), y: new THREE.Vector3(0, 1, 0), z: new THREE.Vector3(0, 0, 1) };
+  const threeLowest = (angles, rootHeight) => {
+    const nodes = human.joints.map(() => new THREE.Object3D());
+    human.joints.forEach((j, i) => {
+      if (j.parent >= 0) { nodes[j.parent].add(nodes[i]); nodes[i].position.fromArray(j.offset); }
+      else nodes[i].position.set(0, rootHeight, 0);
+      const q = new THREE.Quaternion();
+      for (let k = 0; k < j.dofs.length; k++)
+        q.multiply(new THREE.Quaternion().setFromAxisAngle(AX[j.dofs[k]], angles[j.angleIndex + k] * Math.PI / 180));
+      nodes[i].quaternion.copy(q);
+    });
+    nodes[0].updateMatrixWorld(true);
+    let low = Infinity;
+    human.joints.forEach((j, i) => {
+      const { size, center, shape } = j.segment;
+      if (shape === 'sphere') {
+        low = Math.min(low, new THREE.Vector3().fromArray(center).applyMatrix4(nodes[i].matrixWorld).y - size[0]);
+        return;
+      }
+      for (let c = 0; c < 8; c++) {
+        const p = new THREE.Vector3(center[0] + (c & 1 ? 0.5 : -0.5) * size[0], center[1] + (c & 2 ? 0.5 : -0.5) * size[1],
+                                    center[2] + (c & 4 ? 0.5 : -0.5) * size[2]);
+        low = Math.min(low, p.applyMatrix4(nodes[i].matrixWorld).y);
+      }
+    });
+    return low;
+  };
+  // Standing straight at the skeleton's own height: the soles on the grass.
+  const stand = new Float32Array(human.dofCount);
+  assert.ok(Math.abs(lowestPoint(human, stand, 1.0)) < 0.005, `${lowestPoint(human, stand, 1.0)}`);
+  assert.equal(grassLift(human, stand, 1.0), 0);
+  // Sunk 5 cm: raised by 4 (the tolerance is 1 cm).
+  assert.ok(Math.abs(grassLift(human, stand, 0.95) - (0.05 - GRASS_TOLERANCE_M)) < 0.005);
+  // Random poses within the joints' limits agree with three.js to 0.1 mm.
+  let seed = 7;
+  const rand = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  for (let n = 0; n < 50; n++) {
+    const a = new Float32Array(human.dofCount);
+    human.joints.forEach((j) => {
+      for (let k = 0; k < j.dofs.length; k++) {
+        const [lo, hi] = j.limits[k] ?? [-30, 30];
+        a[j.angleIndex + k] = lo + (hi - lo) * rand();
+      }
+    });
+    const h = 0.5 + 0.5 * rand();
+    assert.ok(Math.abs(lowestPoint(human, a, h) - threeLowest(a, h)) < 1e-4, `pose ${n}`);
+  }
+});

@@ -13,6 +13,7 @@ import { STATE } from '../model/playmodes.js';
 import { makeKit, numberTexture, contrastColor } from './kit.js';
 import { HeadSmoother } from '../model/neck.js';
 import { FatiguePose, tiredness } from '../model/fatigue.js';
+import { grassLift } from '../model/ground.js';
 import { playModeName } from '../model/playmodes.js';
 import { BodyFactory } from './body_mesh.js';
 
@@ -187,7 +188,9 @@ export class Players {
       angles.set(smooth);
       rig.tired = this.allTired ? 1 : tiredness(ctx.stamina?.[p.side]?.[p.unum - 1], ctx.staminaMax);
       const drop = this.fatigue.apply(rig.key, p, angles, rig.tired, dt, { stoppage, ball: ctx.ball });
-      rig.root.position.set(p.x, p.z - drop, p.y);
+      // Resting on the grass: a blend of two frames can dip a sole under it.
+      const lift = grassLift(skel, angles, p.z - drop);
+      rig.root.position.set(p.x, p.z - drop + lift, p.y);
       for (let i = 0; i < skel.joints.length; i++) {
         const j = skel.joints[i];
         localRotation(j.dofs, angles, j.angleIndex, rig.nodes[i].quaternion);
