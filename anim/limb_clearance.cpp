@@ -131,7 +131,14 @@ void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a) {
 // figures at 20 Hz and 13 more thighs too close at 60 Hz on game 1 (790 ->
 // 803): the extra turn leaves a margin for the clients' blend.
 bool separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]) {
-  constexpr float kThighGap = 0.07f + 0.015f, kShinGap = 0.05f + 0.015f, kFootGap = 0.05f + 0.015f;
+  // Half a box width plus 3.5 cm: the margin covers the stream's
+  // quantization (1 deg on each hip dof moves a knee 0.8 cm) and leaves room
+  // for the clients' blend between frames. 1.5 cm left 19/15/15 and
+  // 19/14/12 thighs / shins / feet too close at 20 Hz on the two full games
+  // (60 Hz 803/124/180, 742/142/162); 3.5 cm leaves 5/8/8 and 1/5/10
+  // (384/53/131, 359/39/131), for ankle pops at 60 Hz 126/124 -> 131/138;
+  // 4.5 cm 3/7/9 and 1/3/11 for pops 146/150 (anim/README.md).
+  constexpr float kThighGap = 0.07f + 0.035f, kShinGap = 0.05f + 0.035f, kFootGap = 0.05f + 0.035f;
   const glm::mat3 pelvis = joint_rotation(kYzx, &a[dof::kPelvis]);
   for (int it = 0; it < 3; ++it) {
     glm::vec3 hip[2], knee[2], ankle[2], heel[2], toe[2];
