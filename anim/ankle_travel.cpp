@@ -45,10 +45,11 @@ glm::vec3 capped(const glm::vec3& v, float len) {
   return n > len ? v * (len / n) : v;
 }
 
-// True when ankle `now` keeps within both bounds of `last`'s ankle `i`.
-bool within(const AnkleTravel& last, int i, const glm::vec3& pelvis, const glm::vec3& now) {
+// True when ankle `now` keeps within both bounds of `last`'s ankle `i`,
+// each widened by `slack` (m; negative: that far inside).
+bool within(const AnkleTravel& last, int i, const glm::vec3& pelvis, const glm::vec3& now, float slack) {
   const glm::vec3 rel = (now - pelvis) - (last.ankle[i] - last.pelvis);
-  return glm::length(rel) <= kAnklePastPelvisM + 1e-3f && glm::length(now - last.ankle[i]) <= kAnkleWorldStepM + 1e-3f;
+  return glm::length(rel) <= kAnklePastPelvisM + slack && glm::length(now - last.ankle[i]) <= kAnkleWorldStepM + slack;
 }
 
 }  // namespace
@@ -66,8 +67,7 @@ int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, const Ank
     glm::vec3 target;
     body.to_field(f.ankle_ms[0], f.ankle_ms[2], target.x, target.y);
     target.z = f.ankle_ms[1];
-    inside = skip[i] || (glm::length((target - pelvis) - (last.ankle[i] - last.pelvis)) < kAnklePastPelvisM - kSureM &&
-                         glm::length(target - last.ankle[i]) < kAnkleWorldStepM - kSureM);
+    inside = skip[i] || within(last, i, pelvis, target, -kSureM);
   }
   if (inside) return 0;
   // Where the legs as solved put the ankles, and where each may go instead.
@@ -138,7 +138,7 @@ int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, float pel
   ankle_positions(skel, a, pelvis_h, body, now);
   int held = 0;
   for (int i = 0; i < 2; ++i) {
-    if (within(last, i, pelvis, now[i])) continue;
+    if (within(last, i, pelvis, now[i], 1e-3f)) continue;
     // The leg's dofs (hip 3, knee, ankle 2) from last frame's towards this one's.
     const int first = i == 0 ? dof::kRHip : dof::kLHip;
     std::array<float, 6> to{};
@@ -155,7 +155,7 @@ int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, float pel
       set(mid);
       glm::vec3 p[2];
       ankle_positions(skel, a, pelvis_h, body, p);
-      (within(last, i, pelvis, p[i]) ? lo : hi) = mid;
+      (within(last, i, pelvis, p[i], 1e-3f) ? lo : hi) = mid;
     }
     set(lo);
     held |= 1 << i;

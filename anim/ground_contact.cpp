@@ -56,6 +56,11 @@ float rest_on_grass(const SkeletonDef& skeleton, PlayerPose& pose, float toleran
   return lift;
 }
 
+void rest_on_grass(const SkeletonDef& skeleton, PoseFrame& frame) {
+  for (PlayerPose& p : frame.players)
+    if (p.side != Side::Neutral) rest_on_grass(skeleton, p);
+}
+
 float level_foot(const SkeletonDef& skeleton, std::span<glm::mat4> models, std::span<float> angles, int foot,
                  int ankle_dof, float lo_deg, float hi_deg) {
   const JointDef& j = skeleton.joints[static_cast<std::size_t>(foot)];

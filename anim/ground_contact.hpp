@@ -40,6 +40,10 @@ inline constexpr std::uint32_t kLegJoints = (1u << kPelvis) | (1u << kRThigh) | 
 inline constexpr float kGrassToleranceM = 0.01f;
 float rest_on_grass(const SkeletonDef& skeleton, PlayerPose& pose, float tolerance_m = kGrassToleranceM);
 
+// The same for every player of a drawn frame (the viewer's, the quality
+// tool's 60 Hz measurement); players not on the pitch (no side) are left.
+void rest_on_grass(const SkeletonDef& skeleton, PoseFrame& frame);
+
 // Lowest point (model-space Y, m) of joint `j`'s own segment.
 float segment_lowest_ms(const Segment& segment, const glm::mat4& model);
 

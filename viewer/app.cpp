@@ -12,6 +12,7 @@
 #include <GLFW/glfw3.h>
 #include <nlohmann/json.hpp>
 
+#include "anim/ground_contact.hpp"
 #include "viewer/hud.hpp"
 #include "viewer/interpolate.hpp"
 #include "viewer/log_source.hpp"
@@ -287,7 +288,9 @@ int App::run_window() {
       const auto max = meta_.hello->server_params.find("stamina_max");
       fatigue_->apply(*frame_, dt, buffer_.track().stamina(),
                       max != meta_.hello->server_params.end() ? static_cast<float>(max->second) : 8000.0f);
-      rest_on_grass(meta_.hello->skeleton, *frame_);
+      // Every pose drawn rests on the grass (proto/SPEC.md 4.7): a blend of
+      // two frames can dip a sole a few centimetres under it.
+      anim::rest_on_grass(meta_.hello->skeleton, *frame_);
       draw(*frame_, width, height, dt);
       ++drawn;
       skips += sample_->skipped;

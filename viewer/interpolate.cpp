@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "anim/ground_contact.hpp"
-
 namespace mc::viewer {
 namespace {
 float lerp(float p, float q, float t) { return p + (q - p) * t; }
@@ -51,11 +49,6 @@ void blend_frames(const PoseFrame& a, const PoseFrame& b, float t, int dof_count
     for (int k = 0; k < n; ++k) o.angles[k] = lerp(pa.angles[k], pb.angles[k], tt);
     for (int k = n; k < kMaxDof; ++k) o.angles[k] = pa.angles[k];
   }
-}
-
-void rest_on_grass(const SkeletonDef& skeleton, PoseFrame& frame) {
-  for (PlayerPose& p : frame.players)
-    if (p.side != Side::Neutral) anim::rest_on_grass(skeleton, p);
 }
 
 }  // namespace mc::viewer

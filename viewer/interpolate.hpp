@@ -8,7 +8,6 @@
 #pragma once
 
 #include "proto/pose_frame.hpp"
-#include "proto/skeleton.hpp"
 
 namespace mc::viewer {
 
@@ -20,10 +19,5 @@ float lerp_heading(float p, float q, float t);
 // Writes the blend of `a` and `b` at `t` (clamped to [0, 1]) into `out`;
 // `dof_count` angles per player are blended (the rest are copied from a).
 void blend_frames(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out);
-
-// Then every pose drawn rests on the grass (anim::rest_on_grass, the page's
-// web/src/model/ground.js; proto/SPEC.md, "Drawing between frames"): a blend
-// can dip a sole a few centimetres under it. Players off the pitch are left.
-void rest_on_grass(const SkeletonDef& skeleton, PoseFrame& frame);
 
 }  // namespace mc::viewer

@@ -83,7 +83,8 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
   float worst_step[4] = {0, 0, 0, 0};
   // Debugging aid: MATCHCAST_CLOSEUP_TRACE="SLOT FROM_SEQ TO_SEQ" prints that
   // player's feet on every drawn frame (stderr).
-  // MATCHCAST_CLOSEUP_SLIDES=V lists the grounded feet faster than V m/s.
+  // MATCHCAST_CLOSEUP_SLIDES=V lists the grounded feet faster than V m/s,
+  // the poses deeper than 2 cm under the grass and more (anim/README.md).
   const double slides_over = std::getenv("MATCHCAST_CLOSEUP_SLIDES") ? std::atof(std::getenv("MATCHCAST_CLOSEUP_SLIDES")) : 0.0;
   int trace_slot = -1;
   unsigned trace_from = 0, trace_to = 0;
@@ -119,7 +120,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
         fp = &drawn;
       }
       // At the drawing rate, every pose as a client draws it: rested on the grass.
-      if (m > 1) rest_like_clients(skel, drawn);
+      if (m > 1) rest_on_grass(skel, drawn);
       const PoseFrame& f = *fp;
       ++r.frames;
       const double t = (static_cast<double>(i) + static_cast<double>(k) / m) * frame_s;

@@ -5,7 +5,6 @@
 #include <variant>
 
 #include "anim/event_messages.hpp"
-#include "anim/ground_contact.hpp"
 #include "proto/frame_codec.hpp"
 #include "proto/hello.hpp"
 
@@ -77,11 +76,6 @@ void blend_like_clients(const PoseFrame& a, const PoseFrame& b, float t, int dof
       o.angles[static_cast<std::size_t>(k)] = lerp(pa.angles[static_cast<std::size_t>(k)], pb.angles[static_cast<std::size_t>(k)], tt);
   }
   if (legs) legs->apply(a, b, t, out);
-}
-
-void rest_like_clients(const SkeletonDef& skeleton, PoseFrame& drawn) {
-  for (PlayerPose& p : drawn.players)
-    if (p.side != Side::Neutral) rest_on_grass(skeleton, p);
 }
 
 }  // namespace mc::anim::tools

@@ -11,8 +11,8 @@
 // Drawn frames: the page and the native viewer draw at the display's rate
 // and blend two 20 Hz frames linearly (web/src/model/interp.js,
 // viewer/interpolate.cpp); blend_like_clients() is that blend, so that the
-// same metrics can be taken at the drawing rate, and rest_like_clients() the
-// clients' next step. With a LegBlend it also re-aims the planted legs
+// same metrics can be taken at the drawing rate; the clients then rest each
+// pose on the grass (anim::rest_on_grass). With a LegBlend it also re-aims the planted legs
 // (anim/leg_blend.hpp), a step the clients do not take: the tool's
 // --leg-blend measures what it would give.
 #pragma once
@@ -50,10 +50,5 @@ bool view_stream(const SkeletonDef& skeleton, const GameParams& params, const st
 // when given, re-aims the planted legs (null: the clients' blend).
 void blend_like_clients(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out,
                         const LegBlend* legs);
-
-// What the clients then do to every pose they draw, a frame itself or a
-// blend: rest it on the grass (anim::rest_on_grass; proto/SPEC.md, "Drawing
-// between frames"). Players not on the pitch (no side) are left alone.
-void rest_like_clients(const SkeletonDef& skeleton, PoseFrame& drawn);
 
 }  // namespace mc::anim::tools

@@ -88,5 +88,32 @@ TEST(GroundContact, WholeBodyActionsRestOnTheGrass) {
   }
 }
 
+// What a client does to every pose it draws (proto/SPEC.md 4.7): a pose
+// whose soles are under the grass (as a blend of two frames can leave them)
+// is raised by what lies deeper than 1 cm; a body on the grass is left where
+// it is, and so is a player off the pitch.
+TEST(GroundContact, ADrawnPoseRestsOnTheGrass) {
+  const SkeletonDef& skel = human_skeleton();
+  PoseFrame f;
+  for (PlayerPose& p : f.players) p.side = Side::Neutral;
+  f.players[0].side = Side::Left;
+  f.players[0].unum = 1;
+  f.players[0].z = dims::kStandPelvis;  // standing straight: soles on the grass
+  PoseFrame rested = f;
+  rest_on_grass(skel, rested);
+  EXPECT_FLOAT_EQ(rested.players[0].z, f.players[0].z);
+  f.players[0].z -= 0.06f;  // sunk 6 cm
+  f.players[1] = f.players[0];
+  f.players[1].side = Side::Neutral;
+  rest_on_grass(skel, f);
+  EXPECT_NEAR(f.players[0].z, dims::kStandPelvis - kGrassToleranceM, 0.003f);
+  EXPECT_FLOAT_EQ(f.players[1].z, dims::kStandPelvis - 0.06f) << "off the pitch: not touched";
+  // A knee bent under a pelvis left at standing height (the blend's dip
+  // the other way round) is not lowered: the grass only ever pushes up.
+  PlayerPose bent = rested.players[0];
+  bent.angles[static_cast<std::size_t>(dof::kRKnee)] = -60;
+  EXPECT_EQ(rest_on_grass(skel, bent), 0.0f);
+}
+
 }  // namespace
 }  // namespace mc::anim

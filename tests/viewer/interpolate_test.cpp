@@ -3,9 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include "anim/ground_contact.hpp"
-#include "anim/human_skeleton.hpp"
-
 namespace mc::viewer {
 namespace {
 
@@ -84,28 +81,6 @@ TEST(Interpolate, TIsClampedAndAHostileDofCountIsBounded) {
   blend_frames(a, b, -3.0f, -5, out);
   EXPECT_FLOAT_EQ(out.players[0].x, 0.0f);
   EXPECT_FLOAT_EQ(out.players[0].angles[0], 0.0f);
-}
-
-// Every pose drawn rests on the grass: a pose whose soles are under it (as
-// a blend of two frames can leave them) is raised by what lies deeper than
-// 1 cm; a body on the grass is left where it is, and so is a player off the
-// pitch.
-TEST(Interpolate, APoseDrawnBetweenFramesRestsOnTheGrass) {
-  const SkeletonDef& skel = anim::human_skeleton();
-  PoseFrame a;
-  for (int i = 0; i < kMaxPlayers; ++i) a.players[i].side = Side::Neutral;
-  a.players[0].side = Side::Left;
-  a.players[0].unum = 1;
-  a.players[0].z = anim::dims::kStandPelvis;  // standing straight: soles on the grass
-  PoseFrame rested = a;
-  rest_on_grass(skel, rested);
-  EXPECT_FLOAT_EQ(rested.players[0].z, a.players[0].z);
-  a.players[0].z -= 0.06f;  // sunk 6 cm
-  a.players[1] = a.players[0];
-  a.players[1].side = Side::Neutral;
-  rest_on_grass(skel, a);
-  EXPECT_NEAR(a.players[0].z, anim::dims::kStandPelvis - anim::kGrassToleranceM, 0.003f);
-  EXPECT_FLOAT_EQ(a.players[1].z, anim::dims::kStandPelvis - 0.06f) << "off the pitch: not touched";
 }
 
 }  // namespace
