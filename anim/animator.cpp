@@ -88,8 +88,10 @@ float Animator::smoothed_heading(std::uint64_t pos, int slot) const {
     const PlayerState& p = state_at(j).players[i];
     if (p.active() != c.active()) continue;
     const double wt = w + 1 - std::abs(k);
-    sx += wt * pm::cos(p.body * kDeg);
-    sy += wt * pm::sin(p.body * kDeg);
+    double sn = 0, cs = 1;
+    pm::sincos(p.body * kDeg, sn, cs);  // one reduction, the same bits as sin and cos
+    sx += wt * cs;
+    sy += wt * sn;
   }
   // Opposite headings cancel: fall back to the cycle's own heading.
   if (pm::hypot(sx, sy) < 0.25) return static_cast<float>(c.body);

@@ -41,19 +41,23 @@ void sincos_deg(float deg, float& s, float& c) {
 
 glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
   // r * R_axis(angle), column by column: an elementary rotation mixes two
-  // columns of r and keeps the third.
-  glm::mat3 r(1.0f);
-  for (std::size_t i = 0; i < dofs.size(); ++i) {
+  // columns of r and keeps the third. The columns are named, not indexed,
+  // so they stay in registers (this is the hottest loop of the animation).
+  glm::vec3 c0(1, 0, 0), c1(0, 1, 0), c2(0, 0, 1);
+  auto mix = [](glm::vec3& p, glm::vec3& q, float s, float c) {
+    const glm::vec3 cp = p, cq = q;
+    p = c * cp + s * cq;
+    q = c * cq - s * cp;
+  };
+  const char* axes = dofs.data();
+  for (std::size_t i = 0, n = dofs.size(); i < n; ++i) {
     float s = 0, c = 1;
     sincos_deg(deg[i], s, c);
-    int p = 0, q = 1;  // z: columns 0 and 1
-    if (dofs[i] == 'x') { p = 1; q = 2; }
-    else if (dofs[i] == 'y') { p = 2; q = 0; }
-    const glm::vec3 cp = r[p], cq = r[q];
-    r[p] = c * cp + s * cq;
-    r[q] = c * cq - s * cp;
+    if (axes[i] == 'x') mix(c1, c2, s, c);
+    else if (axes[i] == 'y') mix(c2, c0, s, c);
+    else mix(c0, c1, s, c);
   }
-  return r;
+  return glm::mat3(c0, c1, c2);
 }
 
 bool LocalToModelJob::Validate() const {
@@ -76,14 +80,21 @@ bool LocalToModelJob::Run() const {
     a += j.dofs.size();
     if (i < 32 && (joint_mask & (1u << i)) == 0) continue;
     const glm::mat3 r = joint_rotation(j.dofs, ja);
-    glm::mat4 local(r);
-    local[3] = glm::vec4(j.offset_ls[0], j.offset_ls[1], j.offset_ls[2], 1.0f);
+    const glm::vec3 t(j.offset_ls[0], j.offset_ls[1], j.offset_ls[2]);
     if (j.parent < 0) {
-      local[3] += glm::vec4(root_ms, 0.0f);
+      glm::mat4 local(r);
+      local[3] = glm::vec4(t + root_ms, 1.0f);
       models[i] = local;
-    } else {
-      models[i] = models[static_cast<std::size_t>(j.parent)] * local;
+      continue;
     }
+    // parent * [r | t], with the parent's and local's last rows (0 0 0 1)
+    // not multiplied out: the same sums, in the same order, as glm's mat4
+    // product, without its terms that are known to be zero.
+    const glm::mat4& p = models[static_cast<std::size_t>(j.parent)];
+    const glm::vec3 p0(p[0]), p1(p[1]), p2(p[2]), p3(p[3]);
+    glm::mat4& out = models[i];
+    for (int c = 0; c < 3; ++c) out[c] = glm::vec4(p0 * r[c][0] + p1 * r[c][1] + p2 * r[c][2], 0.0f);
+    out[3] = glm::vec4(p0 * t[0] + p1 * t[1] + p2 * t[2] + p3, 1.0f);
   }
   return true;
 }
