@@ -102,6 +102,9 @@ void kick(const ActionMotion& m, float tau, float heading, float root_x, float r
   s.foot_weight[k] = s.weight;
   s.kick_foot = k;
   s.to_contact_s = -tau;
+  s.contact_ankle_x = m.contact_x;  // the keyframes' contact: along 0, up 0
+  s.contact_ankle_y = m.contact_y;
+  s.contact_ankle_h = std::max(m.contact_h, dims::kAnkleHeight);
   // The support foot is down beside the ball from just before contact; it
   // leaves locomotion for its spot only in the 0.1 s before it plants (a long
   // look-ahead does not pin it to a spot the running body has not reached).

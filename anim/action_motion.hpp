@@ -56,6 +56,8 @@ struct ActionSample {
   bool contact = false;
   int kick_foot = 0;  // Kick: the kicking foot on every frame of the kick, [0] right, [1] left
   float to_contact_s = 0;  // Kick: time still to go to the contact (s; negative after it)
+  // Kick: where the kicking ankle will be at the contact (field m, height m).
+  float contact_ankle_x = 0, contact_ankle_y = 0, contact_ankle_h = 0;
   bool support_lands = false;  // Kick: the support foot plants on its spot this frame
   float ball_x = 0, ball_y = 0, ball_h = 0.085f, ball_r = 0.085f;
   float pelvis_height = 0.9f;

@@ -38,20 +38,34 @@ struct AnkleTravel {
 void ankle_positions(const SkeletonDef& skel, std::span<const float> a, float pelvis_h, const BodyFrame& body,
                      glm::vec3 out[2]);
 
-// Pulls back the targets of the legs in `legs` (already solved into
-// legs.angles) whose ankles moved too far since `last`, and solves the legs
-// again. `skip[i]`: leave that foot as it is (a kick's contact). `lift[i]`:
-// a foot pulled back is on its way to a spot, so it is raised above the
-// grass by half the way it has still to go (up to 8 cm). Returns a bit per
-// foot pulled back (1 right, 2 left).
-int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, const AnkleTravel& last, const bool skip[2],
-                       const bool lift[2], LegPoseJob& legs);
+// A spot an ankle must reach within `frames` more frames (a kick's
+// contact, field x, y and height): on each frame before it, the ankle stays
+// within that many frames' travel of it, the pelvis assumed to go on as it
+// went on the last frame. Without it, a kicking foot that came late out of
+// a run covered the whole way in the frame before its contact, up to 0.8 m
+// past the pelvis (issue 23: 43 of the two full games' 55 ankle pops).
+struct AnkleGoal {
+  bool set = false;
+  glm::vec3 at{};
+  int frames = 1;
+};
 
-// The same bounds for a pose given as angles (a tackle's, a dive's): each
-// leg's change since `last_angles` is scaled down, by bisection, until its
-// ankle keeps within them (or the leg is held as it was). Returns a bit per
-// leg held back.
+// Pulls back the targets of the legs in `legs` (already solved into
+// legs.angles) whose ankles moved too far since `last`, or would be too far
+// from their `goal` (may be null), and solves the legs again. `skip[i]`:
+// leave that foot as it is (a kick's contact). `lift[i]`: a foot pulled back
+// is on its way to a spot, so it is raised above the grass by half the way
+// it has still to go (up to 8 cm). Returns a bit per foot pulled back (1
+// right, 2 left).
+int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, const AnkleTravel& last, const bool skip[2],
+                       const bool lift[2], const AnkleGoal goal[2], LegPoseJob& legs);
+
+// The same bounds, widened by `slack` (m), for a pose given as angles (a
+// tackle's, a dive's, legs turned out of each other's way): each leg's
+// change since `last_angles` (the pose it came from, within the bounds) is
+// scaled down, by bisection, until its ankle keeps within them (or the leg
+// is held as it was). Returns a bit per leg held back.
 int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, const AnkleTravel& last,
-                       std::span<const float> last_angles, std::span<float> a);
+                       std::span<const float> last_angles, std::span<float> a, float slack = 1e-3f);
 
 }  // namespace mc::anim

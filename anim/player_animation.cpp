@@ -29,8 +29,14 @@ constexpr float kPelvisRise = 0.03f, kPelvisSink = 0.05f;
 // An ankle is kept this far inside its dorsiflexion limit by raising the heel.
 constexpr float kAnkleMargin = 3.0f;
 constexpr float kAnkleDorsiflexion = 35.0f;  // the ankles' limit (human_skeleton)
-// The kicking foot moves freely (no ankle travel limit) this long before its contact (s).
-constexpr float kStrikeFreeS = 0.06f;
+// A kick's contact frame lies within this of its contact time (s): the
+// kicking foot moves freely (no ankle travel limit) on that frame only.
+constexpr float kContactFrameS = 0.02f;
+// Legs turned out of each other's way may take an ankle this much past a
+// frame's travel (m; the issue's pop is 10 cm further). With 1 mm, legs too
+// close on the two full games rose from 6/10/9 and 2/5/10 to 21/15/11 and
+// 16/13/13; with 4 cm to 11/12/9 and 7/6/10.
+constexpr float kSeparationSlackM = 0.07f;
 // A kick's support foot held up to this far (m, and this high) from its spot
 // as it plants is planted where it is.
 constexpr float kSupportReanchorM = 0.4f;
@@ -391,23 +397,34 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   if (again) legs.Run();
   // No ankle jumps: a target further than an ankle moves in a frame is
   // pulled back, and a planted foot so pulled is not on its spot this frame.
-  if (!in.reset && (act == nullptr || !act->whole_body || w <= 0)) {
-    // The kicking foot is left free from the frame before its contact to
-    // the contact: held back there, it could not reach the ball in time.
-    const bool striking = act != nullptr && act->feet && act->foot_weight[act->kick_foot] > 0 &&
-                          act->to_contact_s < kStrikeFreeS && act->to_contact_s > -0.02f;
-    const bool skip[2] = {striking && act->kick_foot == 0, striking && act->kick_foot == 1};
+  // The kicking foot is left free on its contact frame (touch_ball puts it
+  // on the ball). Before it, it keeps within reach of its contact spot, so
+  // that it gets there without a jump.
+  const bool kicking = act != nullptr && act->feet && act->foot_weight[act->kick_foot] > 0;
+  const bool striking = kicking && std::fabs(act->to_contact_s) < kContactFrameS;
+  const bool skip[2] = {striking && act->kick_foot == 0, striking && act->kick_foot == 1};
+  AnkleGoal goal[2];
+  if (kicking && act->to_contact_s >= kContactFrameS) {
+    AnkleGoal& g = goal[act->kick_foot];
+    g.set = true;
+    g.at = glm::vec3(act->contact_ankle_x, act->contact_ankle_y, act->contact_ankle_h);
+    g.frames = std::max(1, static_cast<int>(std::lround(act->to_contact_s / in.dt)));
+  }
+  const bool travel_limited = !in.reset && (act == nullptr || !act->whole_body || w <= 0);
+  if (travel_limited) {
     // A kick's support foot held short of its spot is on its way there, in
     // the air: at the grass's height it slid the rest of the way.
     bool lift[2] = {false, false};
     if (act != nullptr && act->feet && w > 0)
       for (int i = 0; i < 2; ++i) lift[i] = i != act->kick_foot && act->foot_weight[i] > 0;
-    const int pulled = limit_ankle_travel(limits_from, body, ctx.ankles, skip, lift, legs);
+    const int pulled = limit_ankle_travel(limits_from, body, ctx.ankles, skip, lift, goal, legs);
     for (int i = 0; i < 2; ++i)
       if ((pulled & (1 << i)) != 0) lo.planted[i] = false;
   }
   // Still too close with a leg planted: the planted knees turn out over the
   // same feet (and a leg in the air is turned out again).
+  std::array<float, dof::kCount> unseparated;
+  std::copy_n(a.begin(), dof::kCount, unseparated.begin());
   if (own_feet && separate_legs(a, pelvis_h, lo.planted)) {
     for (float out : {10.0f, 20.0f, 30.0f}) {
       for (int i = 0; i < 2; ++i) legs.feet[i].knee_out_deg = lo.planted[i] ? out : 0.0f;
@@ -415,6 +432,13 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       if (!separate_legs(a, pelvis_h, lo.planted)) break;
     }
   }
+  // Turned out, a leg's ankle swings sideways: it still keeps within a
+  // frame's travel (and kSeparationSlackM), giving up as little of the turn
+  // as it must, from the legs as they were before it. Without it, 5 and 6 of
+  // the two full games' ankle pops came from here.
+  if (travel_limited && !skip[0] && !skip[1] &&
+      !std::equal(unseparated.begin() + dof::kRHip, unseparated.end(), a.begin() + dof::kRHip))
+    limit_ankle_travel(limits_from, body, pelvis_h, ctx.ankles, unseparated, a, kSeparationSlackM);
   // An ankle never rests against its limits: a joint held at its stop looks
   // locked (issue 23). In the air the sole only tilts a little further.
   for (int i = 0; i < 2; ++i) {

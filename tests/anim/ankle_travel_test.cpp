@@ -48,7 +48,7 @@ TEST(AnkleTravel, AnAnkleSentFarInOneFrameGetsThereOverSeveralFrames) {
   int frames = 0;
   for (; frames < 5; ++frames) {
     Legs now(0.45f, 0.20f);
-    const int pulled = limit_ankle_travel(human_skeleton(), body, last, skip, lift, now.job);
+    const int pulled = limit_ankle_travel(human_skeleton(), body, last, skip, lift, nullptr, now.job);
     const AnkleTravel after = travel_of(now, body);
     EXPECT_LE(glm::length(after.ankle[0] - prev), kAnklePastPelvisM + 0.01f) << frames;
     EXPECT_LT(glm::length(after.ankle[1] - left_before), 0.01f) << frames;
@@ -73,7 +73,7 @@ TEST(AnkleTravel, SkippedFeetMoveFreelyAndLiftedFeetRise) {
   {
     Legs now(0.45f, 0.08f);
     const bool skip[2] = {true, false}, lift[2] = {false, false};
-    EXPECT_EQ(limit_ankle_travel(human_skeleton(), body, last, skip, lift, now.job), 0);
+    EXPECT_EQ(limit_ankle_travel(human_skeleton(), body, last, skip, lift, nullptr, now.job), 0);
     const Legs free(0.45f, 0.08f);  // as solved (the leg's reach stops it a little short)
     EXPECT_LT(glm::length(travel_of(now, body).ankle[0] - travel_of(free, body).ankle[0]), 1e-4f);
   }
@@ -81,7 +81,7 @@ TEST(AnkleTravel, SkippedFeetMoveFreelyAndLiftedFeetRise) {
   for (bool up : {false, true}) {
     Legs now(0.45f, 0.08f);
     const bool skip[2] = {false, false}, lift[2] = {up, false};
-    EXPECT_EQ(limit_ankle_travel(human_skeleton(), body, last, skip, lift, now.job), 1);
+    EXPECT_EQ(limit_ankle_travel(human_skeleton(), body, last, skip, lift, nullptr, now.job), 1);
     (up ? high : low) = travel_of(now, body).ankle[0].z;
   }
   EXPECT_GT(high, low + 0.05f) << "0.35 m still to go: raised by 8 cm";
@@ -105,6 +105,46 @@ TEST(AnkleTravel, APoseGivenAsAnglesIsHeldBackToo) {
   const float moved = glm::length(held.ankle[0] - last.ankle[0]);
   EXPECT_LE(moved, kAnklePastPelvisM + 0.01f);
   EXPECT_GT(moved, 0.5f * kAnklePastPelvisM) << "held back, not frozen";
+  // With slack (legs turned out of each other's way), it may go that much
+  // further, and no further.
+  std::array<float, kMaxDof> b = before.a;
+  b[dof::kRHip] += 100.0f;
+  b[dof::kRKnee] = -5.0f;
+  EXPECT_EQ(limit_ankle_travel(human_skeleton(), body, 0.93f, last, before.a, b, 0.07f), 1);
+  AnkleTravel slack;
+  ankle_positions(human_skeleton(), b, 0.93f, body, slack.ankle);
+  const float further = glm::length(slack.ankle[0] - last.ankle[0]);
+  EXPECT_LE(further, kAnklePastPelvisM + 0.07f + 0.01f);
+  EXPECT_GT(further, moved + 0.04f);
+}
+
+// A kicking foot held back at the end of its backswing one frame before
+// its contact, the contact spot 0.8 m ahead: it would have to cover the
+// whole way on the contact frame (a pop). With the contact as its goal it
+// comes forward now, to within a frame's travel of the spot, and moves no
+// more than a frame's travel (with the goal's slack) from where it was.
+TEST(AnkleTravel, AKickingFootKeepsWithinAFramesReachOfItsContact) {
+  const BodyFrame body(4.0f, -2.0f, 0.0f);  // standing still, facing +x
+  const Legs before(-0.35f, 0.20f);
+  const AnkleTravel last = travel_of(before, body);
+  const bool skip[2] = {false, false}, lift[2] = {false, false};
+  AnkleGoal goal[2];
+  goal[0].set = true;
+  goal[0].at = glm::vec3(body.x + 0.45f, body.y + 0.11f, 0.17f);
+  goal[0].frames = 1;
+  {
+    Legs stay(-0.35f, 0.20f);  // the plan keeps the foot back: no goal, no change
+    EXPECT_EQ(limit_ankle_travel(human_skeleton(), body, last, skip, lift, nullptr, stay.job), 0);
+  }
+  Legs stay(-0.35f, 0.20f);
+  EXPECT_EQ(limit_ankle_travel(human_skeleton(), body, last, skip, lift, goal, stay.job), 1);
+  const glm::vec3 now = travel_of(stay, body).ankle[0];
+  EXPECT_LE(glm::length(goal[0].at - now), kAnklePastPelvisM + 0.01f) << "one frame's travel from the ball";
+  EXPECT_LE(glm::length(now - last.ankle[0]), kAnklePastPelvisM + 0.05f + 0.01f);
+  // Two frames out, the same spot is within reach already: left alone.
+  goal[0].frames = 2;
+  Legs early(-0.35f, 0.20f);
+  EXPECT_EQ(limit_ankle_travel(human_skeleton(), body, last, skip, lift, goal, early.job), 0);
 }
 
 }  // namespace

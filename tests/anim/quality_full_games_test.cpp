@@ -111,9 +111,18 @@ struct Bounds {
 // -> 5/8/8 and 19/14/12 -> 1/5/10 at 20 Hz (60 Hz 803/124/180 -> 384/53/131,
 // 742/142/162 -> 359/39/131), bounds 20/15/15 -> 5/8/10 and 810/155/190 ->
 // 390/55/135; ankle pops at 60 Hz 126/124 -> 131/138, bound 130 -> 140.
-constexpr Bounds kAt20Hz{0.20, 0.5, 1.3, 0.02, 0.03, 0, 60, 45, 45, 45, 30, 5, 8, 10, 0, 50, 0.02, 4.5,
+// Ankle pops at 20 Hz meet issue 23's target (0) since a kicking foot keeps
+// within a frame's reach of its contact on the frames before it, and legs
+// turned apart keep within a frame's travel (anim/ankle_travel.hpp,
+// 2026-11-27): 27/28 -> 0/0 (60 Hz 131/138 -> 77/69), bounds 30 -> 0 and
+// 140 -> 80. The trade: one kick on game 1 (a ball behind a backpedalling
+// player) misses by 8.3 cm, its knee held by the joint speed limit, so the
+// kick bound 0.03 -> 0.09; thighs / shins too close on game 1 5/8 -> 8/9
+// (60 Hz shins 53 -> 58), bounds 5/8/10 -> 8/9/10 and 390/55/135 ->
+// 390/58/135.
+constexpr Bounds kAt20Hz{0.20, 0.5, 1.3, 0.02, 0.09, 0, 60, 45, 45, 45, 0, 8, 9, 10, 0, 50, 0.02, 4.5,
                          -0.02, 0.31};
-constexpr Bounds kAt60Hz{0.20, 1.7, 4.1, 0.02, 0.03, 0, 60, 45, 45, 45, 140, 390, 55, 135, 0, 150, 0.02, 4.5,
+constexpr Bounds kAt60Hz{0.20, 1.7, 4.1, 0.02, 0.09, 0, 60, 45, 45, 45, 80, 390, 58, 135, 0, 150, 0.02, 4.5,
                          -0.02, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
