@@ -37,6 +37,9 @@ constexpr float kContactFrameS = 0.02f;
 // close on the two full games rose from 6/10/9 and 2/5/10 to 21/15/11 and
 // 16/13/13; with 4 cm to 11/12/9 and 7/6/10.
 constexpr float kSeparationSlackM = 0.07f;
+// How far past the legs' joint speed limit a hip may turn to keep the legs
+// apart after that limit (deg; separate_legs_again).
+constexpr float kSeparateAgainDeg = 8.0f;
 // A kick's support foot held up to this far (m, and this high) from its spot
 // as it plants is planted where it is.
 constexpr float kSupportReanchorM = 0.4f;
@@ -98,6 +101,31 @@ void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<flo
     }
     k += n;
   }
+}
+
+// After the joint speed limit: a leg in the air is turned out of the other
+// leg's way once more (separate_legs), as long as each hip then turns at
+// most kSeparateAgainDeg past the limit (issue 23's largest change is 60 deg
+// a frame) and, with `travel`, each ankle keeps within a frame's travel
+// (plus kSeparationSlackM). Otherwise the legs stay as the limit left them.
+// On the two full games: thighs / shins / feet too close 8/9/10 -> 5/8/7
+// and 2/5/10 -> 1/2/5 at 20 Hz; with 10 deg the legs' largest change at
+// 60 Hz went to 61.2 deg (anim/README.md).
+void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, std::span<const float> last,
+                         const AnkleTravel* travel, const bool planted[2], std::span<float> a) {
+  std::array<float, dof::kCount> held;
+  std::copy_n(a.begin(), dof::kCount, held.begin());
+  separate_legs(a, pelvis_h, planted);
+  clamp_to_limits(skel, a);
+  if (std::equal(held.begin(), held.end(), a.begin())) return;
+  for (int h : {dof::kRHip, dof::kLHip}) {
+    if (rotation_between("zxy", &last[static_cast<std::size_t>(h)], &a[static_cast<std::size_t>(h)]) >
+        kMaxLegStepDeg + kSeparateAgainDeg) {
+      std::copy(held.begin(), held.end(), a.begin());
+      return;
+    }
+  }
+  if (travel != nullptr) limit_ankle_travel(skel, body, pelvis_h, *travel, held, a, kSeparationSlackM);
 }
 
 // Moves kicking foot `k` so that its box lies kContactGap off the ball:
@@ -506,6 +534,14 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       const int j0 = i == 0 ? kRThigh : kLThigh;
       if (lo.planted[i] && (limited[j0] || limited[j0 + 1] || limited[j0 + 2])) ctx.loco.feet[i].release = true;
     }
+    // The speed limit takes each joint part of the way back to the last
+    // frame, which can bring the legs together again. (Only then: run on
+    // every frame, the check cost 10 % of the animation's time.)
+    bool leg_held = false;
+    for (int j = kRThigh; j <= kLFoot; ++j) leg_held = leg_held || limited[j];
+    if (own_feet && !contact && leg_held)
+      separate_legs_again(limits_from, body, pelvis_h, ctx.last_angles, travel_limited ? &ctx.ankles : nullptr,
+                          lo.planted, a);
   }
   rest_on_grass(8.0f);
   for (int i = 0; i < 2; ++i)  // every touch-down counts for the mocap walk's cadence guard
