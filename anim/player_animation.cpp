@@ -108,8 +108,8 @@ void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<flo
 // most kSeparateAgainDeg past the limit (issue 23's largest change is 60 deg
 // a frame) and, with `travel`, each ankle keeps within a frame's travel
 // (plus kSeparationSlackM). Otherwise the legs stay as the limit left them.
-// On the two full games: thighs / shins / feet too close 8/9/10 -> 5/8/7
-// and 2/5/10 -> 1/2/5 at 20 Hz; with 10 deg the legs' largest change at
+// On the two full games: thighs / shins / feet too close 8/9/10 -> 5/5/6
+// and 2/5/10 -> 0/1/4 at 20 Hz; with 10 deg the legs' largest change at
 // 60 Hz went to 61.2 deg (anim/README.md).
 void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, std::span<const float> last,
                          const AnkleTravel* travel, const bool planted[2], std::span<float> a) {
@@ -464,8 +464,8 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // frame's travel (and kSeparationSlackM), giving up as little of the turn
   // as it must, from the legs as they were before it. Without it, 5 and 6 of
   // the two full games' ankle pops came from here.
-  if (travel_limited && !skip[0] && !skip[1] &&
-      !std::equal(unseparated.begin() + dof::kRHip, unseparated.end(), a.begin() + dof::kRHip))
+  const bool separated = !std::equal(unseparated.begin() + dof::kRHip, unseparated.end(), a.begin() + dof::kRHip);
+  if (travel_limited && !skip[0] && !skip[1] && separated)
     limit_ankle_travel(limits_from, body, pelvis_h, ctx.ankles, unseparated, a, kSeparationSlackM);
   // An ankle never rests against its limits: a joint held at its stop looks
   // locked (issue 23). In the air the sole only tilts a little further.
@@ -535,9 +535,10 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       if (lo.planted[i] && (limited[j0] || limited[j0 + 1] || limited[j0 + 2])) ctx.loco.feet[i].release = true;
     }
     // The speed limit takes each joint part of the way back to the last
-    // frame, which can bring the legs together again. (Only then: run on
-    // every frame, the check cost 10 % of the animation's time.)
-    bool leg_held = false;
+    // frame, which can bring the legs together again, and separate_legs
+    // does not check its own last turn. (Only then: run on every frame, the
+    // check cost 10 % of the animation's time.)
+    bool leg_held = separated;
     for (int j = kRThigh; j <= kLFoot; ++j) leg_held = leg_held || limited[j];
     if (own_feet && !contact && leg_held)
       separate_legs_again(limits_from, body, pelvis_h, ctx.last_angles, travel_limited ? &ctx.ankles : nullptr,
