@@ -18,7 +18,7 @@ void sample_kick_foot(const ActionMotion& m, float tau, float& along, float& up,
   const float f = std::max(m.follow_s, 0.12f);
   const KickKey keys[] = {
       {m.start_s, -0.15f, 0.06f, -10},
-      {std::min(-0.06f, m.start_s + 0.05f), -0.42f, 0.22f, -30},
+      {std::min(-0.06f, m.start_s + 0.05f), -0.42f * m.backswing, 0.22f * m.backswing, -30},
       {0.0f, 0.0f, 0.0f, -15},
       {0.10f, 0.42f, 0.28f, -10},
       {f, 0.55f, 0.14f, -5},

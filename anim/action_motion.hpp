@@ -28,6 +28,9 @@ struct ActionMotion {
   float support_x = 0, support_y = 0;  // field m: support foot planted through contact
   float lunge_x = 0, lunge_y = 0;  // field m: root offset at the contact frame (step-in), 0 at cycles
   float pelvis_height = 0.88f;   // m at contact
+  // Kick: the backswing's share (0-1) of its full wind-up. A contact behind
+  // the hips is reached back for, with little wind-up.
+  float backswing = 1.0f;
   float side = 1;                // dive / catch side: +1 the body's right, -1 its left
   float start_s = -0.15f;        // tau when the motion begins (<= 0)
   float follow_s = 0.2f;         // tau when the follow-through ends (prolonged by merged kicks)

@@ -8,6 +8,13 @@
 #include "anim/portable_math.hpp"
 
 namespace mc::anim {
+namespace {
+
+// A kick's backswing shrinks linearly with how far behind the hips its
+// contact lies, to nothing at this distance (m); it keeps at least a quarter.
+constexpr float kBackswingFadeM = 0.4f;
+
+}  // namespace
 
 bool is_successful_kick(const PlayerState* prev, const PlayerState& cur) {
   if ((cur.state & state_bits::kKick) == 0 || (cur.state & state_bits::kKickFault) != 0) return false;
@@ -65,6 +72,11 @@ ActionMotion plan_kick(const KickPlanInput& in) {
   float cbx, cbz;
   body.to_body(m.contact_x, m.contact_y, cbx, cbz);
   if (side * (cbz - sbz) < 0.12f) sbz = cbz - side * 0.12f;
+  // A contact behind the hips is reached back for, with less wind-up. Wound
+  // up in full, a foot kicking a ball 0.6 m behind a backpedalling player
+  // hung bent high behind him on the frame before the contact, and the
+  // joint speed limit left it 8.3 cm short of the ball (issue 23).
+  m.backswing = clampf(1.0f + cbx / kBackswingFadeM, 0.25f, 1.0f);
   body.to_field(sbx, sbz, m.support_x, m.support_y);
 
   // Step-in: move the root (on the contact frame only) until both hips are

@@ -1,9 +1,11 @@
 #include "anim/kick_planner.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
+#include "anim/action_motion.hpp"
 #include "anim/body_frame.hpp"
 
 namespace mc::anim {
@@ -74,6 +76,29 @@ TEST(PlanKick, StepsInOnlyWhenTheFootCannotReach) {
   const ActionMotion farther = plan_kick(kick_at(1.4f, 0.3f, 0));
   EXPECT_NEAR(std::hypot(farther.lunge_x, farther.lunge_y), kMaxStepIn, 1e-4f);
   EXPECT_LT(farther.pelvis_height, far.pelvis_height);
+}
+
+// A ball in front is wound up for in full; one behind the hips is reached
+// back for, and the foot's highest point before the contact is lower
+// (issue 23: a full wind-up for a ball 0.6 m behind left the knee too bent
+// to straighten onto it within the joint speed limit).
+TEST(PlanKick, ABallBehindTheHipsIsReachedBackForWithLessWindUp) {
+  const ActionMotion front = plan_kick(kick_at(0.5f, 0.2f, 0));
+  const ActionMotion behind = plan_kick(kick_at(-0.45f, 0.3f, 0));
+  EXPECT_FLOAT_EQ(front.backswing, 1.0f);
+  EXPECT_LT(behind.backswing, 0.5f);
+  EXPECT_GE(behind.backswing, 0.25f);
+  auto highest = [](const ActionMotion& m) {
+    float h = 0;
+    for (float tau = m.start_s; tau < 0; tau += 0.01f) {
+      const ActionSample s = sample_action(m, tau, 0, 0, 0);
+      const int k = m.foot == Foot::Right ? 0 : 1;
+      h = std::max(h, s.foot_h[k] - m.contact_h);
+    }
+    return h;
+  };
+  EXPECT_GT(highest(front), 0.15f);
+  EXPECT_LT(highest(behind), 0.11f);
 }
 
 TEST(MergeKick, KicksInConsecutiveCyclesBecomeOneLongerKick) {
