@@ -108,9 +108,10 @@ void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<flo
 // most kSeparateAgainDeg past the limit (issue 23's largest change is 60 deg
 // a frame) and, with `travel`, each ankle keeps within a frame's travel
 // (plus kSeparationSlackM). Otherwise the legs stay as the limit left them.
-// On the two full games: thighs / shins / feet too close 8/9/10 -> 5/5/6
-// and 2/5/10 -> 0/1/4 at 20 Hz; with 10 deg the legs' largest change at
-// 60 Hz went to 61.2 deg (anim/README.md).
+// On the two full games: thighs / shins / feet too close 8/9/10 -> 4/4/3
+// and 2/5/10 -> 0/1/3 at 20 Hz (with a whole-body action's blend, below);
+// with 10 deg the legs' largest change at 60 Hz went to 61.2 deg
+// (anim/README.md).
 void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, std::span<const float> last,
                          const AnkleTravel* travel, const bool planted[2], std::span<float> a) {
   std::array<float, dof::kCount> held;
@@ -480,6 +481,12 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       a[k] += (act->angles[k] - a[k]) * w;
     }
     if (!in.reset) limit_ankle_travel(limits_from, body, pelvis_h, ctx.ankles, ctx.last_angles, a);
+    // Blended with the IK legs, the action's leg pose (a tackle's folded
+    // trailing leg) can pass through the other leg: the right leg turns out.
+    if (!in.reset) {
+      const bool in_air[2] = {false, false};
+      separate_legs_again(limits_from, body, pelvis_h, ctx.last_angles, &ctx.ankles, in_air, a);
+    }
   }
   // Nothing goes under the grass: a sole that the joint limits or the speed
   // limit left pitched into it turns level at the ankle, and what is still

@@ -131,9 +131,13 @@ struct Bounds {
 // the farthest foot 0.083/0.024 -> 0.028/0.024 m, bound 0.09 -> 0.03; feet
 // too close 6/4 -> 5/4 (60 Hz 122/117 -> 119/117), ankle pops at 60 Hz
 // 80/77 -> 77/74.
-constexpr Bounds kAt20Hz{0.20, 0.5, 1.3, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 5, 5, 5, 0, 50, 0.02, 4.5,
+// A whole-body action's leg pose blended over the IK legs is turned out of
+// the other leg's way too (separate_legs_again, 2026-11-27): thighs /
+// shins / feet too close 5/5/5 -> 4/4/3 and 0/1/4 -> 0/1/3 (60 Hz
+// 380/45/119 -> 376/40/115, 343/23/117 -> 343/23/116).
+constexpr Bounds kAt20Hz{0.20, 0.5, 1.3, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 4, 4, 3, 0, 50, 0.02, 4.5,
                          -0.02, 0.31};
-constexpr Bounds kAt60Hz{0.20, 1.7, 4.1, 0.02, 0.03, 0, 60, 45, 45, 45, 77, 380, 45, 119, 0, 150, 0.02, 4.5,
+constexpr Bounds kAt60Hz{0.20, 1.7, 4.1, 0.02, 0.03, 0, 60, 45, 45, 45, 77, 376, 40, 116, 0, 150, 0.02, 4.5,
                          -0.02, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
