@@ -59,7 +59,7 @@ bool within(const AnkleTravel& last, int i, const glm::vec3& pelvis, const glm::
 }
 
 // True when `p` lies within `goal`'s travel (less `margin`, m), the pelvis
-// at `pelvis` now and going on by `pelvis_step` a frame.
+// going on by `pelvis_step` a frame until then.
 bool reaches(const AnkleGoal& goal, const glm::vec3& pelvis_step, const glm::vec3& p, float margin) {
   const auto n = static_cast<float>(goal.frames);
   return glm::length(goal.at - n * pelvis_step - p) <= n * kAnklePastPelvisM - margin &&

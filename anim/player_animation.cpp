@@ -103,11 +103,13 @@ void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<flo
   }
 }
 
-// After the joint speed limit: a leg in the air is turned out of the other
-// leg's way once more (separate_legs), as long as each hip then turns at
-// most kSeparateAgainDeg past the limit (issue 23's largest change is 60 deg
-// a frame) and, with `travel`, each ankle keeps within a frame's travel
-// (plus kSeparationSlackM). Otherwise the legs stay as the limit left them.
+// Legs brought together again after separate_legs (by the joint speed
+// limit, or by a whole-body action's leg pose blended over them): a leg in
+// the air is turned out of the other leg's way once more, as long as each
+// hip then turns at most kSeparateAgainDeg past the limit (issue 23's
+// largest change is 60 deg a frame) and, with `travel`, each ankle keeps
+// within a frame's travel (plus kSeparationSlackM). Otherwise the legs stay
+// as they were.
 // On the two full games: thighs / shins / feet too close 8/9/10 -> 4/4/3
 // and 2/5/10 -> 0/1/3 at 20 Hz (with a whole-body action's blend, below);
 // with 10 deg the legs' largest change at 60 Hz went to 61.2 deg
@@ -120,7 +122,7 @@ void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float p
   clamp_to_limits(skel, a);
   if (std::equal(held.begin(), held.end(), a.begin())) return;
   for (int h : {dof::kRHip, dof::kLHip}) {
-    if (rotation_between("zxy", &last[static_cast<std::size_t>(h)], &a[static_cast<std::size_t>(h)]) >
+    if (rotation_between(kZxy, &last[static_cast<std::size_t>(h)], &a[static_cast<std::size_t>(h)]) >
         kMaxLegStepDeg + kSeparateAgainDeg) {
       std::copy(held.begin(), held.end(), a.begin());
       return;
