@@ -1,14 +1,18 @@
 #include "anim/local_to_model_job.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
 
 #include "anim/portable_math.hpp"
 
 namespace mc::anim {
 namespace {
+
+int axis_index(char a) { return a == 'x' ? 0 : a == 'y' ? 1 : a == 'z' ? 2 : -1; }
 
 constexpr float kDegToRad = 0.017453292519943295f;
 
@@ -58,6 +62,25 @@ glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
     else mix(c0, c1, s, c);
   }
   return glm::mat3(c0, c1, c2);
+}
+
+bool joint_angles(const std::string& dofs, const glm::mat3& r, float out_deg[3]) {
+  if (dofs.size() != 3) return false;
+  const int i = axis_index(dofs[0]), j = axis_index(dofs[1]), k = axis_index(dofs[2]);
+  if (i < 0 || j < 0 || k < 0 || i == j || j == k || i == k) return false;
+  // +1 for a cyclic order (xyz, yzx, zxy), -1 for the others.
+  const float sign = (j - i + 3) % 3 == 1 ? 1.0f : -1.0f;
+  auto at = [&](int row, int col) { return r[col][row]; };  // glm is column-major
+  // asin by atan2: portable_math has no asin (anim's trigonometry must be
+  // the same natively and in WebAssembly).
+  const float sm = std::clamp(sign * at(i, k), -1.0f, 1.0f);
+  const float mid = pm::atan2(sm, std::sqrt(std::max(0.0f, 1.0f - sm * sm)));
+  const float first = pm::atan2(-sign * at(j, k), at(k, k));
+  const float last = pm::atan2(-sign * at(i, j), at(i, i));
+  out_deg[0] = first / kDegToRad;
+  out_deg[1] = mid / kDegToRad;
+  out_deg[2] = last / kDegToRad;
+  return true;
 }
 
 bool LocalToModelJob::Validate() const {

@@ -21,6 +21,11 @@ namespace mc::anim {
 // `dofs` is a subset of "xyz", `deg` holds one angle per dof (degrees).
 glm::mat3 joint_rotation(const std::string& dofs, const float* deg);
 
+// Its inverse for a joint of three different axes: the angles (deg) whose
+// joint_rotation is `r` (the Tait-Bryan decomposition, the middle angle
+// within +-90). False for any other `dofs`.
+bool joint_angles(const std::string& dofs, const glm::mat3& r, float out_deg[3]);
+
 struct LocalToModelJob {
   const SkeletonDef* skeleton = nullptr;
   std::span<const float> angles_deg;  // in: dof_count() angles, SkeletonDef order
