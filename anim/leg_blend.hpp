@@ -1,23 +1,33 @@
-// Legs drawn between two 20 Hz frames (issue 23): a study, not yet in the
-// clients; matchcast-anim-quality --leg-blend measures it.
+// Feet drawn between two 20 Hz frames (issue 23; proto/SPEC.md 4.7, step
+// 2): what both clients draw after the linear blend, and what
+// matchcast-anim-quality measures at their drawing rate.
 //
 // The clients draw at the display's rate and blend two frames' joint angles
 // linearly. Forward kinematics is not linear in the angles, so a foot that
-// stands on the same spot in both frames leaves it in between: 1-2 cm at a
-// third of a frame, which the eye reads as a sliding foot (the grounded foot
-// moved at 0.84 m/s mean at 60 Hz against 0.40 at 20 Hz). This step runs
-// after that blend: each leg whose foot stands on the grass in both frames
-// is re-aimed so that its ankle lies on the straight line between its
-// places in the two frames (a planted foot stays exactly where it is), and
-// the sole turns from its first attitude to its second. A swinging foot
-// keeps the blend's arc. anim/README.md has what it gives and costs. The hip and knee angles change by damped least squares from the
-// blended angles, so the fix is zero at t = 0 and t = 1 and small between:
-// the motion stays the frames' own.
+// stands on the grass in both frames leaves its line between them, and a
+// foot that leaves or lands is dragged over the grass for part of the frame
+// (its sole within 3 cm of it while it travels). Both read as a sliding
+// foot. This step runs after the blend, leg by leg:
+//   - a foot on the grass in both frames (its sole within kContactM, its
+//     ankle moved less than kSameStanceM) keeps its ankle, across the grass,
+//     on the straight line between its places in the two frames;
+//   - a foot on the grass in one frame only is raised: its sole's height
+//     follows 1 - (1 - t)^2 of the way (leaving) or t^2 (landing) instead
+//     of t, so it rises at once and comes down steeply, as a runner's foot
+//     does, instead of skimming the grass.
+// Each is done by swinging the whole leg about its hip joint (the thigh's
+// rotation; the knee and the ankle keep their blended angles) by the
+// rotation that takes the ankle towards its target, at most kMaxSwingDeg.
+// The change is zero at t = 0 and t = 1 and small between, so the motion
+// stays the frames' own: a knee near straight cannot shorten a leg by a
+// centimetre without turning fast, and an earlier version that bent it
+// (damped least squares on hip and knee) made legs jerk at 60 Hz (86 deg
+// per 50 ms). anim/README.md has what it gives.
 //
 // Works on any skeleton whose legs are a chain thigh -> shin -> foot off the
 // root joint (found by name: "thigh"/"hip"/"upleg", "shin"/"knee"/"calf",
-// "foot"/"ankle", one left and one right), the thigh with up to 3 dofs, the
-// shin with 1 and the foot with up to 2. Without such legs it does nothing.
+// "foot"/"ankle", one left and one right), the thigh with 3 dofs about three
+// different axes. Without such legs it does nothing.
 #pragma once
 
 #include <array>
@@ -29,22 +39,27 @@ namespace mc::anim {
 
 class LegBlend {
  public:
-  // `lift_and_land`: also the interval in which a foot leaves the grass
-  // or lands on it (the foot stays until its sole clears the grass, or
-  // arrives before it touches); otherwise only a foot on the grass in both.
-  explicit LegBlend(const SkeletonDef& skeleton, bool lift_and_land = false);
+  explicit LegBlend(const SkeletonDef& skeleton);
 
   // True when both legs were found.
   bool ready() const { return legs_ == 2; }
 
   // `out` is the clients' blend of `a` and `b` at `t` (positions, heading
-  // and angles; same player slots): re-aims its legs. A player whose slot
+  // and angles; same player slots): moves its legs. A player whose slot
   // changes between the frames or whose root jumps `teleport_m` or more is
   // left as blended (a teleport is not animated).
   void apply(const PoseFrame& a, const PoseFrame& b, float t, PoseFrame& out, float teleport_m = 5.0f) const;
 
   // One player: `o` is the blend of `pa` and `pb` at `t`.
   void apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o) const;
+
+  // A foot is on the grass when its box's lowest corner is this low (m; the
+  // height at which a viewer sees it touch, and anim-quality's contact).
+  static constexpr float kContactM = 0.03f;
+  // Both frames on the grass and the ankle this close: one stance (m).
+  static constexpr float kSameStanceM = 0.3f;
+  // The largest swing of a leg about its hip (deg).
+  static constexpr float kMaxSwingDeg = 1.0f;
 
  private:
   struct Joint {
@@ -59,7 +74,6 @@ class LegBlend {
   const SkeletonDef& skeleton_;
   std::array<Leg, 2> leg_{};
   int legs_ = 0;
-  bool lift_and_land_ = false;
 };
 
 }  // namespace mc::anim

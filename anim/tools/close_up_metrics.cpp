@@ -91,7 +91,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
   if (const char* t = std::getenv("MATCHCAST_CLOSEUP_TRACE"))
     if (std::sscanf(t, "%d %u %u", &trace_slot, &trace_from, &trace_to) != 3) trace_slot = -1;
   PoseFrame drawn;
-  const LegBlend legs(skel, drawn_legs == DrawnLegs::ContactsReaimed);
+  const LegBlend legs(skel);
   // MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the drawn grounded pairs by whether
   // the foot is on the grass in the 20 Hz frames around them (stderr).
   const bool breakdown = m > 1 && std::getenv("MATCHCAST_CLOSEUP_BREAKDOWN");
@@ -113,7 +113,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
       const PoseFrame* fp = &frames[i];
       if (k > 0) {
         blend_like_clients(frames[i], frames[i + 1], static_cast<float>(k) / static_cast<float>(m), dofs, drawn,
-                           drawn_legs != DrawnLegs::AngleBlend ? &legs : nullptr);
+                           drawn_legs == DrawnLegs::LegBlend ? &legs : nullptr);
         fp = &drawn;
       } else if (m > 1) {
         drawn = frames[i];

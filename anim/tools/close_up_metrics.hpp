@@ -130,13 +130,12 @@ struct CloseUpReport {
 // more). `states`: the log's 10 Hz states (root error at cycles, by
 // seq / 2); `produced`: the animator's frames before encoding (joint limits).
 // How drawn frames between two 20 Hz ones are blended: as the clients do
-// (joint angles linearly), or, a study of what it would give, with the legs
-// re-aimed (anim/leg_blend.hpp): those whose foot stands on the grass in
-// both frames, or also those of a foot leaving or landing.
-enum class DrawnLegs { AngleBlend, PlantedReaimed, ContactsReaimed };
+// (joint angles linearly, then the feet kept on their line or raised off the
+// grass, anim/leg_blend.hpp), or, to measure what that step gives, without it.
+enum class DrawnLegs { AngleBlendOnly, LegBlend };
 CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldState>& states,
                                const std::vector<PoseFrame>& produced, int draws_per_frame,
-                               DrawnLegs legs = DrawnLegs::AngleBlend);
+                               DrawnLegs legs = DrawnLegs::LegBlend);
 
 // The report as a table: one column per report (20 Hz, then the drawing rate).
 std::string format_close_up(const std::vector<const CloseUpReport*>& reports);

@@ -6,15 +6,16 @@
 //
 //   matchcast-anim-quality [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR]
 //                          [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N]
-//                          [--detail none|run|kick|full] [--leg-blend planted|contacts] LOG...
+//                          [--detail none|run|kick|full] [--leg-blend none] LOG...
 //
 // --mode mocap takes the kicks and slow walking from the CMU clips
 // (anim/motion_source.hpp; the motion graph is cached in --mocap-cache);
 // --compare animates each log in both modes and prints the metrics side by
 // side (the picture then shows the mocap mode). --draw-rate: the clients'
 // drawing rate measured beside the 20 Hz frames (a multiple of 20, default 60);
-// --leg-blend draws it with the planted legs re-aimed (anim/leg_blend.hpp;
-// contacts: also a leaving or landing foot), which the clients do not do yet; MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the
+// drawn as the clients draw it (the angle blend, then the feet,
+// anim/leg_blend.hpp); --leg-blend none leaves out the feet, to measure what
+// they give. MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the
 // drawn frames' sliding by the 20 Hz feet around them (stderr).
 // --contact-sheet: the close-up contact sheet of the first log (a sprint, a
 // kick, a turn, every frame of a second, contact_sheet.hpp), default
@@ -148,7 +149,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> logs;
   std::string mode = "keyframe", mocap_dir = MATCHCAST_DEFAULT_MOCAP_DIR, mocap_cache = MATCHCAST_DEFAULT_MOCAP_CACHE;
   bool compare = false;
-  DrawnLegs drawn_legs = DrawnLegs::AngleBlend;
+  DrawnLegs drawn_legs = DrawnLegs::LegBlend;
   int draw_rate = 60;
   std::string sheet = "test-output/anim/contact-sheet.png";
   for (int i = 1; i < argc; ++i) {
@@ -160,8 +161,8 @@ int main(int argc, char** argv) {
     else if (arg == "--mode" && i + 1 < argc && (std::string(argv[i + 1]) == "keyframe" || std::string(argv[i + 1]) == "mocap"))
       mode = argv[++i];
     else if (arg == "--compare") compare = true;
-    else if (arg == "--leg-blend" && i + 1 < argc && (std::string(argv[i + 1]) == "planted" || std::string(argv[i + 1]) == "contacts"))
-      drawn_legs = std::string(argv[++i]) == "planted" ? DrawnLegs::PlantedReaimed : DrawnLegs::ContactsReaimed;
+    else if (arg == "--leg-blend" && i + 1 < argc && std::string(argv[i + 1]) == "none")
+      drawn_legs = DrawnLegs::AngleBlendOnly, ++i;
     else if (arg == "--mocap-dir" && i + 1 < argc) mocap_dir = argv[++i];
     else if (arg == "--mocap-cache" && i + 1 < argc) mocap_cache = argv[++i];
     else if (arg == "--detail" && i + 1 < argc) {
@@ -172,7 +173,7 @@ int main(int argc, char** argv) {
       }
       cfg.detail = *d;
     } else if (!arg.empty() && arg[0] == '-') {
-      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] [--leg-blend planted|contacts] LOG...\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] [--leg-blend none] LOG...\n", argv[0]);
       return 2;
     } else {
       logs.push_back(arg);
@@ -183,7 +184,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (logs.empty()) {
-    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] [--leg-blend planted|contacts] LOG...\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] [--leg-blend none] LOG...\n", argv[0]);
     return 2;
   }
   // Mocap mode: the caller loads the clips, the animator stays pure.

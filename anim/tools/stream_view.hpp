@@ -12,9 +12,8 @@
 // and blend two 20 Hz frames linearly (web/src/model/interp.js,
 // viewer/interpolate.cpp); blend_like_clients() is that blend, so that the
 // same metrics can be taken at the drawing rate; the clients then rest each
-// pose on the grass (anim::rest_on_grass). With a LegBlend it also re-aims the planted legs
-// (anim/leg_blend.hpp), a step the clients do not take: the tool's
-// --leg-blend measures what it would give.
+// pose on the grass (anim::rest_on_grass). With a LegBlend it also takes
+// the clients' step for the feet (anim/leg_blend.hpp) after the blend.
 #pragma once
 
 #include <string>

@@ -21,8 +21,9 @@ namespace {
 
 // Upper bounds (lower for the kick's depth), one set per drawing rate.
 struct Bounds {
-  // Grounded-foot mean: standing, the worst band up to 9 m/s, above 9 m/s.
-  double stand_mps, moving_band_mps, sprint_band_mps;
+  // Grounded-foot mean: standing, the worst band up to 9 m/s, above 9 m/s,
+  // and the worst band up to 8 m/s.
+  double stand_mps, moving_band_mps, sprint_band_mps, to_8_band_mps;
   double kick_p95_m, kick_max_m;
   long kicks_inside;
   double leg_deg, arm_deg, trunk_deg, head_deg;
@@ -135,9 +136,17 @@ struct Bounds {
 // the other leg's way too (separate_legs_again, 2026-11-27): thighs /
 // shins / feet too close 5/5/5 -> 4/4/3 and 0/1/4 -> 0/1/3 (60 Hz
 // 380/45/119 -> 376/40/115, 343/23/117 -> 343/23/116).
-constexpr Bounds kAt20Hz{0.20, 0.5, 1.3, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 4, 4, 3, 0, 50, 0.02, 4.5,
+// The clients keep planted feet on their line between frames and raise
+// feet that leave or land (proto/SPEC.md 4.7 step 2, anim/leg_blend.cpp;
+// 2026-11-27): at 60 Hz the worst band up to 8 m/s 0.85/0.92 -> 0.70/0.78
+// m/s (bound 0.8, new), up to 9 m/s 1.65/1.20 -> 1.46/1.05 (bound 1.7 ->
+// 1.5); thighs / shins / feet too close 376/40/115 -> 359/40/116 and
+// 343/23/116 -> 323/27/119, ankle pops 77/74 -> 81/73 (at the threshold:
+// steps of 0.60-0.63 m relative to the pelvis per 50 ms that cross it
+// either way); bounds 376/40/116 -> 360/40/120 and pops 77 -> 81.
+constexpr Bounds kAt20Hz{0.20, 0.5, 1.3, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 4, 4, 3, 0, 50, 0.02, 4.5,
                          -0.02, 0.31};
-constexpr Bounds kAt60Hz{0.20, 1.7, 4.1, 0.02, 0.03, 0, 60, 45, 45, 45, 77, 376, 40, 116, 0, 150, 0.02, 4.5,
+constexpr Bounds kAt60Hz{0.20, 1.5, 4.1, 0.8, 0.02, 0.03, 0, 60, 45, 45, 45, 81, 360, 40, 120, 0, 150, 0.02, 4.5,
                          -0.02, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
@@ -147,6 +156,9 @@ void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& w
   for (int band = 1; band + 1 < kSpeedBands; ++band) worst = std::max(worst, band_mean(r, band));
   EXPECT_LE(worst, b.moving_band_mps);
   EXPECT_LE(band_mean(r, kSpeedBands - 1), b.sprint_band_mps);
+  double to_8 = 0;
+  for (int band = 1; band + 2 < kSpeedBands; ++band) to_8 = std::max(to_8, band_mean(r, band));
+  EXPECT_LE(to_8, b.to_8_band_mps);
   EXPECT_LE(r.kick_box_m.percentile(95), b.kick_p95_m);
   EXPECT_LE(r.kick_box_m.max(), b.kick_max_m);
   EXPECT_LE(r.kicks_inside, b.kicks_inside);
