@@ -146,6 +146,7 @@ void App::check_hello() {
   hello_generation_ = meta_.hello_generation;
   model_ = std::make_unique<PlayerModel>(meta_.hello->skeleton);
   heads_ = std::make_unique<HeadSmoother>(meta_.hello->skeleton);
+  feet_ = std::make_unique<anim::LegBlend>(meta_.hello->skeleton);
   fatigue_ = std::make_unique<FatiguePose>(meta_.hello->skeleton);
   renderer_->set_field(meta_.hello->field);
 }
@@ -244,7 +245,7 @@ void App::follow_director(double live_seq, double dt, double rate) {
       director_.update(live_seq, dt, cues_, camera_.mode() == CameraMode::Director, history_, rate);
   if (step.cut) director_cut_ = true;
   // A replay draws the history instead of the live picture.
-  if (step.replaying) history_.at(step.replay_seq, meta_.hello->skeleton.dof_count(), *frame_);
+  if (step.replaying) history_.at(step.replay_seq, meta_.hello->skeleton.dof_count(), *frame_, feet_.get());
 }
 
 void App::draw_waiting(const std::string& status, int width, int height) {
@@ -280,7 +281,7 @@ int App::run_window() {
     // from the network: the source thread only fills the buffer.
     const double rate = source_->paused() ? 0.0 : source_->speed();
     if (model_ && buffer_.sample(playhead_, dt * meta_.hello->frame_rate * rate, *sample_)) {
-      blend_frames(sample_->a, sample_->b, sample_->t, meta_.hello->skeleton.dof_count(), *frame_);
+      blend_frames(sample_->a, sample_->b, sample_->t, meta_.hello->skeleton.dof_count(), *frame_, feet_.get());
       history_.add(sample_->a);
       history_.add(sample_->b);
       follow_director(sample_->playhead, dt, rate);

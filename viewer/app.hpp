@@ -63,6 +63,7 @@ class App {
   Camera camera_;
   StreamMeta meta_;
   std::unique_ptr<PlayerModel> model_;
+  std::unique_ptr<anim::LegBlend> feet_;  // feet kept put between frames (SPEC 4.7 step 2)
   std::unique_ptr<HeadSmoother> heads_;  // heads at human speed where drawn
   std::unique_ptr<FatiguePose> fatigue_;  // tired players lean, hands on knees at stoppages
   // The director (issue 20): its cues, the frames drawn (to replay a goal), the shot.

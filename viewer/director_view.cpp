@@ -115,14 +115,14 @@ bool FrameHistory::covers(double from, double to) const {
   return !frames_.empty() && frames_.front().seq <= from && frames_.back().seq >= to;
 }
 
-bool FrameHistory::at(double seq, int dof_count, PoseFrame& out) const {
+bool FrameHistory::at(double seq, int dof_count, PoseFrame& out, const anim::LegBlend* feet) const {
   if (frames_.empty() || seq < frames_.front().seq || seq > frames_.back().seq) return false;
   const auto it = std::upper_bound(frames_.begin(), frames_.end(), seq,
                                    [](double s, const PoseFrame& f) { return s < static_cast<double>(f.seq); });
   const PoseFrame& a = *(it - 1);
   const PoseFrame& b = it == frames_.end() ? a : *it;
   const double span = static_cast<double>(b.seq) - a.seq;
-  blend_frames(a, b, span > 0 ? static_cast<float>((seq - a.seq) / span) : 0.0f, dof_count, out);
+  blend_frames(a, b, span > 0 ? static_cast<float>((seq - a.seq) / span) : 0.0f, dof_count, out, feet);
   return true;
 }
 

@@ -15,6 +15,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "anim/leg_blend.hpp"
 #include "proto/director_cue.hpp"
 #include "proto/hello.hpp"
 #include "proto/pose_frame.hpp"
@@ -40,7 +41,8 @@ class FrameHistory {
   void add(const PoseFrame& f);  // frames with a seq not above the newest are ignored (but a new timeline resets)
   bool covers(double from, double to) const;
   // The blend of the two frames around `seq`; false when it is not held.
-  bool at(double seq, int dof_count, PoseFrame& out) const;
+  // With `feet`, the feet's step too (blend_frames).
+  bool at(double seq, int dof_count, PoseFrame& out, const anim::LegBlend* feet = nullptr) const;
   void clear() { frames_.clear(); }
   std::size_t size() const { return frames_.size(); }
 

@@ -15,7 +15,8 @@ float lerp_heading(float p, float q, float t) {
   return p + d * t;
 }
 
-void blend_frames(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out) {
+void blend_frames(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out,
+                  const anim::LegBlend* feet) {
   t = std::clamp(t, 0.0f, 1.0f);
   const PoseFrame& d = t >= 1.0f ? b : a;
   out.seq = d.seq;
@@ -49,6 +50,7 @@ void blend_frames(const PoseFrame& a, const PoseFrame& b, float t, int dof_count
     for (int k = 0; k < n; ++k) o.angles[k] = lerp(pa.angles[k], pb.angles[k], tt);
     for (int k = n; k < kMaxDof; ++k) o.angles[k] = pa.angles[k];
   }
+  if (feet != nullptr) feet->apply(a, b, t, out, kTeleportMetres);
 }
 
 }  // namespace mc::viewer

@@ -7,6 +7,7 @@
 // across the pitch: he switches at t = 0.5.
 #pragma once
 
+#include "anim/leg_blend.hpp"
 #include "proto/pose_frame.hpp"
 
 namespace mc::viewer {
@@ -18,6 +19,9 @@ float lerp_heading(float p, float q, float t);
 
 // Writes the blend of `a` and `b` at `t` (clamped to [0, 1]) into `out`;
 // `dof_count` angles per player are blended (the rest are copied from a).
-void blend_frames(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out);
+// With `feet`, planted feet then keep to their line and lifting ones clear
+// the grass (proto/SPEC.md 4.7 step 2).
+void blend_frames(const PoseFrame& a, const PoseFrame& b, float t, int dof_count, PoseFrame& out,
+                  const anim::LegBlend* feet = nullptr);
 
 }  // namespace mc::viewer

@@ -3,6 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "anim/human_skeleton.hpp"
+
 namespace mc::viewer {
 namespace {
 
@@ -81,6 +88,50 @@ TEST(Interpolate, TIsClampedAndAHostileDofCountIsBounded) {
   blend_frames(a, b, -3.0f, -5, out);
   EXPECT_FLOAT_EQ(out.players[0].x, 0.0f);
   EXPECT_FLOAT_EQ(out.players[0].angles[0], 0.0f);
+}
+
+// With the feet's step (proto/SPEC.md 4.7 step 2), the viewer draws what
+// the golden vectors say for a case that moves a leg; without it, the plain
+// blend.
+TEST(Interpolate, WithTheFeetAPlantedLegIsDrawnAsTheGoldenVectorsSay) {
+  std::ifstream file(std::string(MATCHCAST_SOURCE_DIR) + "/tests/proto/golden/feet_v1.json");
+  ASSERT_TRUE(file.good());
+  const nlohmann::json doc = nlohmann::json::parse(file);
+  const anim::LegBlend feet(anim::human_skeleton());
+  const int dofs = anim::human_skeleton().dof_count();
+  auto frame = [&](const nlohmann::json& j, std::uint32_t seq) {
+    PoseFrame f = make(seq, 0.0f, 0.0f, 0.0f);
+    PlayerPose& p = f.players[0];
+    p.x = j["x"].get<float>();
+    p.y = j["y"].get<float>();
+    p.z = j["z"].get<float>();
+    p.heading = j["heading"].get<float>();
+    for (int k = 0; k < dofs; ++k) p.angles[static_cast<std::size_t>(k)] = j["angles"][static_cast<std::size_t>(k)].get<float>();
+    return f;
+  };
+  int checked = 0;
+  for (const auto& c : doc["cases"]) {
+    float moved = 0;
+    for (int k = 0; k < dofs; ++k)
+      moved = std::max(moved, std::fabs(c["out"][static_cast<std::size_t>(k)].get<float>() -
+                                        c["drawn"]["angles"][static_cast<std::size_t>(k)].get<float>()));
+    if (moved < 0.05f) continue;
+    const PoseFrame a = frame(c["a"], 10), b = frame(c["b"], 11);
+    PoseFrame with, without;
+    blend_frames(a, b, c["t"].get<float>(), dofs, with, &feet);
+    blend_frames(a, b, c["t"].get<float>(), dofs, without);
+    float off = 0, plain = 0;
+    for (int k = 0; k < dofs; ++k) {
+      const float want = c["out"][static_cast<std::size_t>(k)].get<float>();
+      off = std::max(off, std::fabs(with.players[0].angles[static_cast<std::size_t>(k)] - want));
+      plain = std::max(plain, std::fabs(without.players[0].angles[static_cast<std::size_t>(k)] - want));
+    }
+    // The file's drawn pose is rounded to 0.0001 deg, the viewer's blend is not.
+    EXPECT_LT(off, 0.01f);
+    EXPECT_GT(plain, 0.04f);
+    ++checked;
+  }
+  EXPECT_GT(checked, 5);
 }
 
 }  // namespace
