@@ -23,6 +23,7 @@ import { ServerShift } from './net/server_shift.js';
 import { Stream } from './net/stream.js';
 import { Codec, loadDecoder, readHello } from './net/codec.js';
 import { blendFrames } from './model/interp.js';
+import { keepFeet } from './model/feet.js';
 import { Announcer } from './announcer.js';
 import { STATE } from './model/playmodes.js';
 import { LocalLogs } from './local/local_logs.js';
@@ -379,6 +380,9 @@ function frameLoop(now) {
   if (shifted && !timeshift.active) { events.jump(); s = live; }   // caught up with live
   if (s) {
     view = blendFrames(s.a, s.b, s.t, view);
+    // Planted feet stay on their line between the frames, lifting ones clear
+    // the grass (proto/SPEC.md 4.7 step 2); players.update rests the bodies on it.
+    if (players) keepFeet(players.skel, s.a, s.b, s.t, view);
     // A director's replay is silent (no kicks or banners of the past again).
     if (!director.track.replaying) events.step(s.passed, timeshift.active ? timeshift.pos : buffer.playhead,
       timeshift.active ? (timeshift.paused ? 0 : timeshift.speed * 1000 / buffer.frameMs) : buffer.rate);
