@@ -20,6 +20,8 @@
 // x + bx cos h - bz sin h, y + bx sin h + bz cos h. Rotations are 3 x 3,
 // row-major. No allocation after the first call for a skeleton.
 
+import { axisRotation } from './ground.js';
+
 export const CONTACT_M = 0.03;       // a sole this low is on the grass
 export const SAME_STANCE_M = 0.3;    // both frames on it and this close: one stance
 export const MAX_SWING_DEG = 1;      // the largest swing of a leg about its hip
@@ -94,16 +96,6 @@ function apply(m, v, out) {
 }
 
 const axisTmp = new Float64Array(9), prodTmp = new Float64Array(9);
-
-// R_axis(deg), right-handed.
-function axisRotation(axis, deg, out) {
-  const c = Math.cos(deg * DEG), s = Math.sin(deg * DEG);
-  out.fill(0);
-  if (axis === 'x') { out[0] = 1; out[4] = c; out[5] = -s; out[7] = s; out[8] = c; }
-  else if (axis === 'y') { out[0] = c; out[2] = s; out[4] = 1; out[6] = -s; out[8] = c; }
-  else { out[0] = c; out[1] = -s; out[3] = s; out[4] = c; out[8] = 1; }
-  return out;
-}
 
 // A joint's local rotation: R_dofs[0](a0) * R_dofs[1](a1) * ...
 function localRotation(joint, angles, out) {

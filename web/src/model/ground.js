@@ -26,7 +26,7 @@ function mul3(a, ao, b, bo, out, oo) {
 }
 
 // R_axis(deg), row-major, right-handed (as THREE.Quaternion.setFromAxisAngle).
-function axisRotation(axis, deg, out) {
+export function axisRotation(axis, deg, out) {
   const c = Math.cos(deg * DEG), s = Math.sin(deg * DEG);
   out.fill(0);
   if (axis === 'x') { out[0] = 1; out[4] = c; out[5] = -s; out[7] = s; out[8] = c; }
