@@ -19,10 +19,10 @@
 // rotation; the knee and the ankle keep their blended angles) by the
 // rotation that takes the ankle towards its target, at most kMaxSwingDeg.
 // The change is zero at t = 0 and t = 1 and small between, so the motion
-// stays the frames' own: a knee near straight cannot shorten a leg by a
-// centimetre without turning fast, and an earlier version that bent it
-// (damped least squares on hip and knee) made legs jerk at 60 Hz (86 deg
-// per 50 ms). anim/README.md has what it gives.
+// stays the frames' own. An earlier version (damped least squares on hip
+// and knee) also chased the blend's error in height, which step 3 (rest
+// on the grass) deals with, and bent the knees for it: legs jerked at
+// 60 Hz (86 deg per 50 ms). anim/README.md has what this one gives.
 //
 // Works on any skeleton whose legs are a chain thigh -> shin -> foot off the
 // root joint (found by name: "thigh"/"hip"/"upleg", "shin"/"knee"/"calf",

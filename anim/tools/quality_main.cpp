@@ -161,8 +161,10 @@ int main(int argc, char** argv) {
     else if (arg == "--mode" && i + 1 < argc && (std::string(argv[i + 1]) == "keyframe" || std::string(argv[i + 1]) == "mocap"))
       mode = argv[++i];
     else if (arg == "--compare") compare = true;
-    else if (arg == "--leg-blend" && i + 1 < argc && std::string(argv[i + 1]) == "none")
-      drawn_legs = DrawnLegs::AngleBlendOnly, ++i;
+    else if (arg == "--leg-blend" && i + 1 < argc && std::string(argv[i + 1]) == "none") {
+      drawn_legs = DrawnLegs::AngleBlendOnly;
+      ++i;
+    }
     else if (arg == "--mocap-dir" && i + 1 < argc) mocap_dir = argv[++i];
     else if (arg == "--mocap-cache" && i + 1 < argc) mocap_cache = argv[++i];
     else if (arg == "--detail" && i + 1 < argc) {
