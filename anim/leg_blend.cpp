@@ -177,8 +177,12 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
       // The same turn, not one the other way round the circle.
       const float d = std::remainder(deg[k] - v_out, 360.0f);
       float next = v_out + d;
-      if (static_cast<std::size_t>(k) < td.limits.size())
-        next = std::clamp(next, td.limits[static_cast<std::size_t>(k)][0], td.limits[static_cast<std::size_t>(k)][1]);
+      if (static_cast<std::size_t>(k) < td.limits.size()) {
+        // A hello's limit given upside down is read as the quantizer reads
+        // it (its top no lower than its bottom), never passed to std::clamp.
+        const auto& lim = td.limits[static_cast<std::size_t>(k)];
+        next = std::min(std::max(next, lim[0]), std::max(lim[0], lim[1]));
+      }
       v_out = next;
     }
   }

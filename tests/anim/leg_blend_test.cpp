@@ -165,6 +165,22 @@ TEST(LegBlend, TheFramesThemselvesAndTeleportsAreLeftAlone) {
   EXPECT_EQ(o.players[0].angles, before.angles);
 }
 
+// A hello from an untrusted server may give a thigh's limit upside down:
+// it is read as the quantizer reads it ([lo, max(lo, hi)]), not handed to
+// std::clamp (whose result is then undefined).
+TEST(LegBlend, AThighLimitGivenUpsideDownIsReadAsTheQuantizerReadsIt) {
+  SkeletonDef s = human_skeleton();
+  s.joints[static_cast<std::size_t>(kRThigh)].limits[0] = {10.0f, -10.0f};  // flexion
+  const LegBlend legs(s);
+  ASSERT_TRUE(legs.ready());
+  const PlayerPose a = stance(0.0f, 0.15f, -0.35f, 0.25f, 0.08f, -6.0f);
+  const PlayerPose b = stance(0.3f, -0.15f, 0.05f, 0.22f, 0.08f, 6.0f);
+  PlayerPose o = angle_blend(a, b, 0.5f);
+  legs.apply(a, b, 0.5f, o);
+  EXPECT_EQ(o.angles[static_cast<std::size_t>(dof::kRHip)], 10.0f);
+  for (float v : o.angles) EXPECT_TRUE(std::isfinite(v));
+}
+
 TEST(LegBlend, ASkeletonWithoutLegsIsNotTouched) {
   SkeletonDef s;
   s.joints.push_back(JointDef{"root", -1, {0, 0, 0}, "y", {{-180, 180}}, {}});

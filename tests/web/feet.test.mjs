@@ -60,6 +60,19 @@ test('frames, teleports and a skeleton without legs are left alone', () => {
   assert.equal(findLegs(armless), null);
 });
 
+test("a hello's garbage or upside-down thigh limits give finite angles", () => {
+  const c = golden.cases.find((k) => k.out.some((v, i) => Math.abs(v - k.drawn.angles[i]) > 0.01));
+  const def = structuredClone(golden.skeleton);
+  const thigh = def.joints.findIndex((j) => j.name === 'r_thigh');
+  def.joints[thigh].limits = [[10, -10], ['x', 1], null];
+  const bad = normalizeSkeleton(def);
+  const o = pose(c.drawn);
+  keepFeetOfPlayer(bad, pose(c.a), pose(c.b), c.t, o);
+  const at = bad.joints[thigh].angleIndex;
+  assert.ok(Array.from(o.angles).every(Number.isFinite), 'every angle finite');
+  assert.equal(o.angles[at], 10, 'an upside-down limit holds at its bottom');
+});
+
 test('joint angles undo a rotation in every order', () => {
   const DEG = Math.PI / 180;
   const rot = (axis, d) => {

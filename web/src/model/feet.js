@@ -226,8 +226,12 @@ export function keepFeetOfPlayer(skel, pa, pb, t, o) {
       const cur = o.angles[joint.angleIndex + d];
       // The same turn, not one the other way round the circle.
       let next = cur + (((S.deg[d] - cur) % 360 + 540) % 360 - 180);
+      // A hello's limit that is not two numbers is no limit; one given upside
+      // down is read as the quantizer reads it (its top no lower than its bottom).
       const lim = joint.limits[d];
-      if (lim) next = Math.max(lim[0], Math.min(lim[1], next));
+      if (Array.isArray(lim) && Number.isFinite(lim[0]) && Number.isFinite(lim[1])) {
+        next = Math.min(Math.max(next, lim[0]), Math.max(lim[0], lim[1]));
+      }
       o.angles[joint.angleIndex + d] = next;
     }
   }
