@@ -8,24 +8,12 @@
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/local_to_model_job.hpp"
+#include "anim/segment_distance.hpp"
 
 namespace mc::anim {
 namespace {
 
 const std::string kYzx = "yzx", kZxy = "zxy", kZ = "z", kZx = "zx";
-
-// Closest distance between segments p1q1 and p2q2 (Ericson, Real-Time
-// Collision Detection, 5.1.9).
-float segment_distance(glm::vec3 p1, glm::vec3 q1, glm::vec3 p2, glm::vec3 q2) {
-  const glm::vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
-  const float c = glm::dot(d1, r), b = glm::dot(d1, d2), denom = a * e - b * b;
-  float s = denom > 1e-9f ? clampf((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
-  float t = e > 1e-9f ? (b * s + f) / e : 0.0f;
-  if (t < 0) { t = 0; s = a > 1e-9f ? clampf(-c / a, 0.0f, 1.0f) : 0.0f; }
-  else if (t > 1) { t = 1; s = a > 1e-9f ? clampf((b - c) / a, 0.0f, 1.0f) : 0.0f; }
-  return glm::length((p1 + d1 * s) - (p2 + d2 * t));
-}
 
 }  // namespace
 

@@ -6,36 +6,13 @@
 #include <glm/vec4.hpp>
 
 #include "anim/local_to_model_job.hpp"
+#include "anim/segment_distance.hpp"
 #include "anim/tools/close_up_metrics.hpp"
 
 namespace mc::anim::tools::posed {
 namespace {
 
 constexpr float kRadToDeg = 57.29577951308232f;
-
-// Closest distance between segments p1q1 and p2q2 (Ericson, Real-Time
-// Collision Detection, 5.1.9).
-float segment_distance(glm::vec3 p1, glm::vec3 q1, glm::vec3 p2, glm::vec3 q2) {
-  const glm::vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
-  float s = 0, t = 0;
-  if (a <= 1e-9f && e <= 1e-9f) return glm::length(r);
-  if (a <= 1e-9f) {
-    t = std::clamp(f / e, 0.0f, 1.0f);
-  } else {
-    const float c = glm::dot(d1, r);
-    if (e <= 1e-9f) {
-      s = std::clamp(-c / a, 0.0f, 1.0f);
-    } else {
-      const float b = glm::dot(d1, d2), denom = a * e - b * b;
-      s = denom > 1e-9f ? std::clamp((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
-      t = (b * s + f) / e;
-      if (t < 0) { t = 0; s = std::clamp(-c / a, 0.0f, 1.0f); }
-      else if (t > 1) { t = 1; s = std::clamp((b - c) / a, 0.0f, 1.0f); }
-    }
-  }
-  return glm::length((p1 + d1 * s) - (p2 + d2 * t));
-}
 
 void centreline(const Rig& rig, const Geom& g, int j, glm::vec3& p, glm::vec3& q) {
   const Box& b = rig.box[static_cast<std::size_t>(j)];
