@@ -304,7 +304,8 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             std::fprintf(stderr, " | %c low %.3f %s c %.3f %.3f v %.2f", s == 0 ? 'R' : 'L', g.feet[s].lowest,
                          g.feet[s].grounded ? "G" : "-", c.x, c.z, v);
           }
-          std::fprintf(stderr, "\n");
+          std::fprintf(stderr, " | apart %.3f %.3f %.3f\n", clearance(rig, g, rig.thigh[0], rig.thigh[1]),
+                       clearance(rig, g, rig.shin[0], rig.shin[1]), clearance(rig, g, rig.foot[0], rig.foot[1]));
         }
         std::swap(prev[p], cur[p]);
         have_prev[p] = true;
