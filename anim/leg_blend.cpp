@@ -4,11 +4,14 @@
 #include <cctype>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
 #include "anim/body_frame.hpp"
 #include "anim/local_to_model_job.hpp"
+#include "anim/segment_distance.hpp"
 
 namespace mc::anim {
 namespace {
@@ -51,6 +54,46 @@ struct FootPlace {
   float sole = 0;         // the foot box's lowest corner above the grass (m)
 };
 
+// Rodrigues: the rotation by `angle` (rad) about unit axis `n`,
+// cos I + (1 - cos) n n^T + sin [n]x.
+glm::mat3 axis_rotation(const glm::vec3& n, float angle) {
+  float sin_a = 0, cos_a = 1;
+  pm::sincos(angle, sin_a, cos_a);
+  glm::mat3 r = cos_a * glm::mat3(1.0f) + (1.0f - cos_a) * glm::outerProduct(n, n);
+  r += sin_a * glm::mat3(0, n.z, -n.y, -n.z, 0, n.x, n.y, -n.x, 0);  // columns of [n]x
+  return r;
+}
+
+// A joint's local transform (its rotation from `angles` + first_angle, at
+// its offset from the parent).
+glm::mat4 local_model(const std::vector<JointDef>& joints, int index, int first_angle, const float* angles) {
+  const JointDef& d = joints[static_cast<std::size_t>(index)];
+  glm::mat4 m(joint_rotation(d.dofs, angles + first_angle));
+  m[3] = glm::vec4(d.offset_ls[0], d.offset_ls[1], d.offset_ls[2], 1.0f);
+  return m;
+}
+
+// The root joint's model transform (body space, at the pose's height).
+glm::mat4 root_model_of(const JointDef& root, const float* angles, float height) {
+  glm::mat4 m(joint_rotation(root.dofs, angles));
+  m[3] = glm::vec4(root.offset_ls[0], root.offset_ls[1] + height, root.offset_ls[2], 1.0f);
+  return m;
+}
+
+// The lowest corner of a foot's box with model transform `m` (its joint's
+// height when the segment is not a box).
+float sole_height(const Segment& box, const glm::mat4& m) {
+  float sole = m[3].y;
+  if (box.shape == SegmentShape::Box)
+    for (int c = 0; c < 8; ++c) {
+      const glm::vec4 corner(box.center[0] + ((c & 1) ? 0.5f : -0.5f) * box.size[0],
+                             box.center[1] + ((c & 2) ? 0.5f : -0.5f) * box.size[1],
+                             box.center[2] + ((c & 4) ? 0.5f : -0.5f) * box.size[2], 1.0f);
+      sole = std::min(sole, (m * corner).y);
+    }
+  return sole;
+}
+
 }  // namespace
 
 LegBlend::LegBlend(const SkeletonDef& skeleton) : skeleton_(skeleton) {
@@ -59,7 +102,20 @@ LegBlend::LegBlend(const SkeletonDef& skeleton) : skeleton_(skeleton) {
   for (std::size_t i = 1; i < joints.size(); ++i)
     first[i] = first[i - 1] + static_cast<int>(joints[i - 1].dofs.size());
   auto joint = [&](std::size_t i) {
-    return Joint{static_cast<int>(i), first[i], static_cast<int>(joints[i].dofs.size())};
+    Joint j{static_cast<int>(i), first[i], static_cast<int>(joints[i].dofs.size())};
+    const Segment& sg = joints[i].segment;
+    if (sg.shape == SegmentShape::Box) {
+      const glm::vec3 h(0.5f * sg.size[0], 0.5f * sg.size[1], 0.5f * sg.size[2]);
+      const int axis = h.x >= h.y && h.x >= h.z ? 0 : h.y >= h.z ? 1 : 2;
+      glm::vec3 e(0.0f);
+      e[axis] = h[axis];
+      const glm::vec3 c(sg.center[0], sg.center[1], sg.center[2]);
+      j.box = true;
+      j.line_from = c - e;
+      j.line_to = c + e;
+      j.half_width = std::max(h[(axis + 1) % 3], h[(axis + 2) % 3]);
+    }
+    return j;
   };
   for (std::size_t i = 0; i < joints.size(); ++i) {
     const std::string n = lower(joints[i].name);
@@ -98,40 +154,27 @@ void LegBlend::apply(const PoseFrame& a, const PoseFrame& b, float t, PoseFrame&
 void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o) const {
   if (!ready() || t <= 0.0f || t >= 1.0f) return;
   const auto& joints = skeleton_.joints;
-  const JointDef& root = joints[0];
-  auto local = [&](const Joint& j, const float* angles) {
-    const JointDef& d = joints[static_cast<std::size_t>(j.index)];
-    glm::mat4 m(joint_rotation(d.dofs, angles + j.first_angle));
-    m[3] = glm::vec4(d.offset_ls[0], d.offset_ls[1], d.offset_ls[2], 1.0f);
-    return m;
-  };
-  // The root joint's model transform (body space, at the pose's height).
-  auto root_model = [&](const float* angles, float height) {
-    glm::mat4 m(joint_rotation(root.dofs, angles));
-    m[3] = glm::vec4(root.offset_ls[0], root.offset_ls[1] + height, root.offset_ls[2], 1.0f);
-    return m;
-  };
+  auto local = [&](const Joint& j, const float* angles) { return local_model(joints, j.index, j.first_angle, angles); };
+  auto root_model = [&](const float* angles, float height) { return root_model_of(joints[0], angles, height); };
   // Where a pose puts a foot: its ankle (field space) and its box's lowest corner.
   auto place = [&](const Leg& leg, const PlayerPose& p) {
     const glm::mat4 m = root_model(p.angles.data(), p.z) * local(leg.thigh, p.angles.data()) *
                         local(leg.shin, p.angles.data()) * local(leg.foot, p.angles.data());
-    const Segment& box = joints[static_cast<std::size_t>(leg.foot.index)].segment;
-    float sole = m[3].y;
-    if (box.shape == SegmentShape::Box)
-      for (int c = 0; c < 8; ++c) {
-        const glm::vec4 corner(box.center[0] + ((c & 1) ? 0.5f : -0.5f) * box.size[0],
-                               box.center[1] + ((c & 2) ? 0.5f : -0.5f) * box.size[1],
-                               box.center[2] + ((c & 4) ? 0.5f : -0.5f) * box.size[2], 1.0f);
-        sole = std::min(sole, (m * corner).y);
-      }
-    return FootPlace{FieldOf{BodyFrame(p.x, p.y, p.heading)}.point(glm::vec3(m[3])), sole};
+    return FootPlace{FieldOf{BodyFrame(p.x, p.y, p.heading)}.point(glm::vec3(m[3])),
+                     sole_height(joints[static_cast<std::size_t>(leg.foot.index)].segment, m)};
   };
 
   const FieldOf body{BodyFrame(o.x, o.y, o.heading)};
-  for (const Leg& leg : leg_) {
+  bool in_air[2] = {false, false};
+  float travel[2] = {0, 0};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Leg& leg = leg_[i];
     const FootPlace fa = place(leg, pa), fb = place(leg, pb);
+    // The ankle's travel about the root over the frame (field space).
+    travel[i] = glm::length((fb.ankle - glm::vec3(pb.x, pb.z, pb.y)) - (fa.ankle - glm::vec3(pa.x, pa.z, pa.y)));
     const bool ca = fa.sole < kContactM, cb = fb.sole < kContactM;
-    if (!ca && !cb) continue;  // in the air in both: the blend's arc
+    in_air[i] = !ca && !cb;
+    if (in_air[i]) continue;  // in the air in both: the blend's arc
     // The drawn pose's hip (the thigh joint) and ankle.
     float* q = o.angles.data();
     const glm::mat4 pelvis = root_model(q, o.z);
@@ -160,30 +203,114 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
     const float s = glm::length(axis);
     if (s < 1e-6f) continue;
     const float angle = std::min(pm::atan2(s, glm::dot(u, v)), kMaxSwingDeg * kDeg);
-    // Rodrigues: cos I + (1 - cos) n n^T + sin [n]x.
-    const glm::vec3 n = axis / s;
-    float sin_a = 0, cos_a = 1;
-    pm::sincos(angle, sin_a, cos_a);
-    glm::mat3 swing = cos_a * glm::mat3(1.0f) + (1.0f - cos_a) * glm::outerProduct(n, n);
-    swing += sin_a * glm::mat3(0, n.z, -n.y, -n.z, 0, n.x, n.y, -n.x, 0);  // columns of [n]x
-    // The thigh's new local rotation: parent^-1 * swing * (parent * local).
-    const glm::mat3 parent(pelvis);
-    const glm::mat3 turned = glm::transpose(parent) * swing * glm::mat3(thigh);
-    const JointDef& td = joints[static_cast<std::size_t>(leg.thigh.index)];
-    float deg[3];
-    if (!joint_angles(td.dofs, turned, deg)) continue;
-    for (int k = 0; k < 3; ++k) {
-      float& v_out = q[leg.thigh.first_angle + k];
-      // The same turn, not one the other way round the circle.
-      const float d = std::remainder(deg[k] - v_out, 360.0f);
-      float next = v_out + d;
-      if (static_cast<std::size_t>(k) < td.limits.size()) {
-        // A hello's limit given upside down is read as the quantizer reads
-        // it (its top no lower than its bottom), never passed to std::clamp.
-        const auto& lim = td.limits[static_cast<std::size_t>(k)];
-        next = std::min(std::max(next, lim[0]), std::max(lim[0], lim[1]));
+    const glm::mat3 swing = axis_rotation(axis / s, angle);
+    turn_thigh(leg, pelvis, thigh, swing, q);
+  }
+  // How far each leg may turn out of the other's way (rad): not at all
+  // when its ankle travels kApartTravelM or more about the root over the
+  // frame (the turn would carry it further: more ankle pops); else growing
+  // from 0 at either frame at the rate its thigh's own turn over the frame
+  // leaves below kApartSpeedDeg, up to kMaxApartDeg, so that the legs never
+  // turn faster than the frames let them.
+  float room[2];
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Joint& th = leg_[i].thigh;
+    const std::string& dofs = joints[static_cast<std::size_t>(th.index)].dofs;
+    const glm::mat3 ra = joint_rotation(dofs, pa.angles.data() + th.first_angle);
+    const glm::mat3 rb = joint_rotation(dofs, pb.angles.data() + th.first_angle);
+    const float tr = ra[0][0] * rb[0][0] + ra[0][1] * rb[0][1] + ra[0][2] * rb[0][2] + ra[1][0] * rb[1][0] +
+                     ra[1][1] * rb[1][1] + ra[1][2] * rb[1][2] + ra[2][0] * rb[2][0] + ra[2][1] * rb[2][1] +
+                     ra[2][2] * rb[2][2];
+    const float speed = pm::acos(std::clamp(0.5f * (tr - 1.0f), -1.0f, 1.0f)) / kDeg;
+    room[i] = travel[i] >= kApartTravelM
+                  ? 0.0f
+                  : std::min(kMaxApartDeg, std::max(0.0f, kApartSpeedDeg - speed) * std::min(t, 1.0f - t)) * kDeg;
+  }
+  keep_apart(in_air, room, o);
+}
+
+void LegBlend::turn_thigh(const Leg& leg, const glm::mat4& pelvis, const glm::mat4& thigh, const glm::mat3& rotation,
+                          float* q) const {
+  // The thigh's new local rotation: parent^-1 * rotation * (parent * local).
+  const glm::mat3 parent(pelvis);
+  const glm::mat3 turned = glm::transpose(parent) * rotation * glm::mat3(thigh);
+  const JointDef& td = skeleton_.joints[static_cast<std::size_t>(leg.thigh.index)];
+  float deg[3];
+  if (!joint_angles(td.dofs, turned, deg)) return;
+  for (int k = 0; k < 3; ++k) {
+    float& v_out = q[leg.thigh.first_angle + k];
+    // The same turn, not one the other way round the circle.
+    const float d = std::remainder(deg[k] - v_out, 360.0f);
+    float next = v_out + d;
+    if (static_cast<std::size_t>(k) < td.limits.size()) {
+      // A hello's limit given upside down is read as the quantizer reads
+      // it (its top no lower than its bottom), never passed to std::clamp.
+      const auto& lim = td.limits[static_cast<std::size_t>(k)];
+      next = std::min(std::max(next, lim[0]), std::max(lim[0], lim[1]));
+    }
+    v_out = next;
+  }
+}
+
+void LegBlend::keep_apart(const bool in_air[2], float room[2], PlayerPose& o) const {
+  const auto& joints = skeleton_.joints;
+  float* q = o.angles.data();
+  auto local = [&](const Joint& j) { return local_model(joints, j.index, j.first_angle, q); };
+  // Twice: the second round takes up what a turn across the legs' line
+  // (rather than along it) left.
+  for (int round = 0; round < 2; ++round) {
+    const glm::mat4 pelvis = root_model_of(joints[0], q, o.z);
+    glm::mat4 thigh[2], shin[2], foot[2];
+    float share[2];
+    for (std::size_t i = 0; i < 2; ++i) {
+      thigh[i] = pelvis * local(leg_[i].thigh);
+      shin[i] = thigh[i] * local(leg_[i].shin);
+      foot[i] = shin[i] * local(leg_[i].foot);
+      // A foot on the grass stays where the first part left it; one in the
+      // air moves freely from twice that height (between: in proportion,
+      // so that the turn grows smoothly as the foot rises).
+      const float sole = sole_height(joints[static_cast<std::size_t>(leg_[i].foot.index)].segment, foot[i]);
+      share[i] = in_air[i] ? 1.0f : std::clamp((sole - kContactM) / kContactM, 0.0f, 1.0f);
+    }
+    const float shares = share[0] + share[1];
+    if (shares <= 0.0f) return;
+    // The pair of boxes furthest inside their distance.
+    float shortfall = 0;
+    ClosestPoints closest;
+    const std::pair<const Joint Leg::*, const glm::mat4*> pairs[] = {
+        {&Leg::thigh, thigh}, {&Leg::shin, shin}, {&Leg::foot, foot}};
+    for (const auto& [member, model] : pairs) {
+      const Joint& j0 = leg_[0].*member;
+      const Joint& j1 = leg_[1].*member;
+      if (!j0.box || !j1.box) continue;
+      const ClosestPoints c = closest_points(glm::vec3(model[0] * glm::vec4(j0.line_from, 1.0f)),
+                                             glm::vec3(model[0] * glm::vec4(j0.line_to, 1.0f)),
+                                             glm::vec3(model[1] * glm::vec4(j1.line_from, 1.0f)),
+                                             glm::vec3(model[1] * glm::vec4(j1.line_to, 1.0f)));
+      const float need = kApartM + std::max(j0.half_width, j1.half_width) - c.distance;
+      if (need > shortfall) {
+        shortfall = need;
+        closest = c;
       }
-      v_out = next;
+    }
+    if (shortfall <= 0.0f) return;
+    // Each leg in the air turns out at the hip, away from the other hip,
+    // by its share of the shortfall: the angle that moves its nearest point
+    // that far outwards.
+    const glm::vec3 hip[2] = {glm::vec3(thigh[0][3]), glm::vec3(thigh[1][3])};
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (share[i] <= 0.0f) continue;
+      const glm::vec3 lever = (i == 0 ? closest.on_first : closest.on_second) - hip[i];
+      const glm::vec3 across = hip[i] - hip[1 - i];
+      const float width = glm::length(across);
+      if (width < 1e-4f) continue;
+      const glm::vec3 axis = glm::cross(lever, across / width);
+      const float reach = glm::length(axis);  // outward travel per radian
+      if (reach < 1e-3f) continue;
+      const float angle = std::min(shortfall * share[i] / shares / reach, room[i]);
+      if (angle <= 0.0f) continue;
+      room[i] -= angle;
+      turn_thigh(leg_[i], pelvis, thigh[i], axis_rotation(axis / reach, angle), q);
     }
   }
 }

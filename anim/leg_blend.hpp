@@ -19,7 +19,16 @@
 // rotation; the knee and the ankle keep their blended angles) by the
 // rotation that takes the ankle towards its target, at most kMaxSwingDeg.
 // The change is zero at t = 0 and t = 1 and small between, so the motion
-// stays the frames' own. An earlier version (damped least squares on hip
+// stays the frames' own.
+// Then the legs are kept apart: both frames hold the legs' boxes apart
+// (anim/limb_clearance.cpp), but a leg swinging past the other passes
+// through it in the blend. A leg in the air turns out at the hip, away from
+// the other hip, until the centre lines of the two thighs, shins and feet
+// are kApartM beyond half the wider box's width. The turn may grow only
+// from nothing at either frame, at the rate the thigh's own turn over the
+// frame leaves below kApartSpeedDeg, and up to kMaxApartDeg; a leg whose
+// ankle travels kApartTravelM about the root over the frame is not turned
+// (it would be carried further: more ankle pops). An earlier version (damped least squares on hip
 // and knee) also chased the blend's error in height, which step 3 (rest
 // on the grass) deals with, and bent the knees for it: legs jerked at
 // 60 Hz (86 deg per 50 ms). anim/README.md has what this one gives.
@@ -31,6 +40,10 @@
 #pragma once
 
 #include <array>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 
 #include "proto/pose_frame.hpp"
 #include "proto/skeleton.hpp"
@@ -60,16 +73,43 @@ class LegBlend {
   static constexpr float kSameStanceM = 0.3f;
   // The largest swing of a leg about its hip (deg).
   static constexpr float kMaxSwingDeg = 1.0f;
+  // The legs' boxes keep this far apart beyond half the wider box's width,
+  // centre line to centre line (m; anim-quality's clearance).
+  static constexpr float kApartM = 0.01f;
+  // The largest turn of a leg out of the other's way (deg).
+  static constexpr float kMaxApartDeg = 8.0f;
+  // A leg turns out only while its thigh turns slower than this (deg per
+  // frame; anim-quality's limit is 60), and the turn grows at most at the
+  // difference per frame from either frame.
+  static constexpr float kApartSpeedDeg = 54.0f;
+  // A leg whose ankle travels this far about the root over the frame does
+  // not turn out (m; anim-quality counts 0.6 as an ankle pop).
+  static constexpr float kApartTravelM = 0.4f;
 
  private:
   struct Joint {
     int index = -1;
     int first_angle = 0;
     int dofs = 0;
+    // The segment's box: its centre line (the longest axis, end to end, in
+    // the joint's space) and half its larger other side; absent for a
+    // segment that is not a box.
+    bool box = false;
+    glm::vec3 line_from{0.0f}, line_to{0.0f};
+    float half_width = 0;
   };
   struct Leg {
     Joint thigh, shin, foot;
   };
+
+  // Turns a leg's thigh by `rotation` (body space, about the hip joint);
+  // `pelvis` and `thigh` are the root's and the thigh's model transforms.
+  void turn_thigh(const Leg& leg, const glm::mat4& pelvis, const glm::mat4& thigh, const glm::mat3& rotation,
+                  float* angles) const;
+  // The second part of the step: the legs' boxes kept apart. `in_air`: the
+  // foot is off the grass in both frames; `room`: how far each leg may
+  // still turn (rad), used up as it turns.
+  void keep_apart(const bool in_air[2], float room[2], PlayerPose& o) const;
 
   const SkeletonDef& skeleton_;
   std::array<Leg, 2> leg_{};

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -17,6 +18,7 @@
 #include "anim/human_skeleton.hpp"
 #include "anim/leg_pose_job.hpp"
 #include "anim/local_to_model_job.hpp"
+#include "anim/segment_distance.hpp"
 #include "proto/hello.hpp"
 
 namespace mc::anim {
@@ -25,7 +27,7 @@ namespace {
 // A player at field (x, 0) facing +x whose feet are at the given body-space
 // ankles (pelvis 0.93 m up, leaning a little forward).
 PlayerPose stance(float x, float right_ankle_x, float left_ankle_x, float left_ankle_h, float right_ankle_h = 0.08f,
-                  float pelvis_yaw = 0.0f) {
+                  float pelvis_yaw = 0.0f, float half_gap = 0.11f) {
   PlayerPose p;
   p.side = Side::Left;
   p.unum = 7;
@@ -35,8 +37,8 @@ PlayerPose stance(float x, float right_ankle_x, float left_ankle_x, float left_a
   p.angles[dof::kPelvis + 1] = -6;
   LegPoseJob job;
   job.pelvis_height = p.z;
-  job.feet[0].ankle_ms[0] = right_ankle_x; job.feet[0].ankle_ms[1] = right_ankle_h; job.feet[0].ankle_ms[2] = 0.11f;
-  job.feet[1].ankle_ms[0] = left_ankle_x; job.feet[1].ankle_ms[1] = left_ankle_h; job.feet[1].ankle_ms[2] = -0.11f;
+  job.feet[0].ankle_ms[0] = right_ankle_x; job.feet[0].ankle_ms[1] = right_ankle_h; job.feet[0].ankle_ms[2] = half_gap;
+  job.feet[1].ankle_ms[0] = left_ankle_x; job.feet[1].ankle_ms[1] = left_ankle_h; job.feet[1].ankle_ms[2] = -half_gap;
   job.angles = std::span<float>(p.angles.data(), p.angles.size());
   EXPECT_TRUE(job.Run());
   return p;
@@ -143,6 +145,77 @@ TEST(LegBlend, ALeavingFootRisesAtOnceAndALandingOneComesDownSteeply) {
     EXPECT_EQ(lift.angles[static_cast<std::size_t>(k)], blended.angles[static_cast<std::size_t>(k)]) << "dof " << k;
 }
 
+// How far apart the legs' boxes are (centre line to centre line, less half
+// the wider box): the smallest of thighs, shins and feet (anim-quality's
+// clearance).
+float legs_apart(const PlayerPose& p) {
+  const SkeletonDef& s = human_skeleton();
+  std::vector<glm::mat4> m(s.joints.size());
+  LocalToModelJob fk{&s, std::span<const float>(p.angles.data(), p.angles.size()), glm::vec3(0, p.z, 0), m};
+  EXPECT_TRUE(fk.Run());
+  auto line = [&](int j, glm::vec3& from, glm::vec3& to, float& half_width) {
+    const Segment& b = s.joints[static_cast<std::size_t>(j)].segment;
+    const glm::vec3 h(0.5f * b.size[0], 0.5f * b.size[1], 0.5f * b.size[2]);
+    const int axis = h.x >= h.y && h.x >= h.z ? 0 : h.y >= h.z ? 1 : 2;
+    glm::vec3 e(0.0f);
+    e[axis] = h[axis];
+    const glm::vec3 c(b.center[0], b.center[1], b.center[2]);
+    from = glm::vec3(m[static_cast<std::size_t>(j)] * glm::vec4(c - e, 1.0f));
+    to = glm::vec3(m[static_cast<std::size_t>(j)] * glm::vec4(c + e, 1.0f));
+    half_width = std::max(h[(axis + 1) % 3], h[(axis + 2) % 3]);
+  };
+  float apart = 1e9f;
+  for (const auto& [r, l] : {std::pair{kRThigh, kLThigh}, std::pair{kRShin, kLShin}, std::pair{kRFoot, kLFoot}}) {
+    glm::vec3 p1, q1, p2, q2;
+    float w1 = 0, w2 = 0;
+    line(r, p1, q1, w1);
+    line(l, p2, q2, w2);
+    apart = std::min(apart, segment_distance(p1, q1, p2, q2) - std::max(w1, w2));
+  }
+  return apart;
+}
+
+// A right leg swinging from behind to in front of a left one planted close
+// to the body's midline: apart in both frames, through the other leg in
+// the plain blend between them.
+struct PassingLegs {
+  PlayerPose a = stance(0.0f, -0.15f, 0.0f, 0.08f, 0.16f, 0.0f, 0.005f);
+  PlayerPose b = stance(0.15f, 0.15f, 0.0f, 0.08f, 0.16f, 0.0f, 0.005f);
+};
+
+TEST(LegBlend, ALegSwingingPastTheOtherTurnsOutOfItsWay) {
+  const PassingLegs legs;
+  ASSERT_GT(legs_apart(legs.a), 0.0f);
+  ASSERT_GT(legs_apart(legs.b), 0.0f);
+  const PlayerPose plain = angle_blend(legs.a, legs.b, 0.5f);
+  ASSERT_LT(legs_apart(plain), -0.005f) << "the case must pass the legs through each other";
+  const LegBlend blend(human_skeleton());
+  PlayerPose drawn = plain;
+  blend.apply(legs.a, legs.b, 0.5f, drawn);
+  EXPECT_GT(legs_apart(drawn), 0.0f);
+  // Only the leg in the air turned: the planted left foot stays put.
+  EXPECT_LT(glm::length(ankle(drawn, 1) - ankle(plain, 1)), 1e-4f);
+  EXPECT_GT(glm::length(ankle(drawn, 0) - ankle(plain, 0)), 0.005f);
+}
+
+TEST(LegBlend, TheTurnOutGrowsFromNothingAtEitherFrame) {
+  const PassingLegs legs;
+  const LegBlend blend(human_skeleton());
+  float last_turn = 0;
+  for (float t : {0.02f, 0.08f, 0.98f}) {
+    const PlayerPose plain = angle_blend(legs.a, legs.b, t);
+    PlayerPose drawn = plain;
+    blend.apply(legs.a, legs.b, t, drawn);
+    // The thigh's extra turn stays within kApartSpeedDeg's room at this t.
+    float turn = 0;
+    for (int k = 0; k < 3; ++k)
+      turn = std::max(turn, std::fabs(drawn.angles[dof::kRHip + k] - plain.angles[dof::kRHip + k]));
+    EXPECT_LE(turn, LegBlend::kApartSpeedDeg * std::min(t, 1 - t) * 1.5f + 0.2f) << t;
+    last_turn = turn;
+  }
+  EXPECT_LT(last_turn, 1.7f);
+}
+
 TEST(LegBlend, TheFramesThemselvesAndTeleportsAreLeftAlone) {
   const LegBlend legs(human_skeleton());
   const PlayerPose a = stance(0.0f, 0.15f, -0.35f, 0.25f);
@@ -233,17 +306,24 @@ TEST(LegBlend, GoldenVectorsForTheClients) {
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
     auto in = [&](float lo, float hi) { return lo + (hi - lo) * u01(rng); };
     nlohmann::json cases = nlohmann::json::array();
-    for (int i = 0; i < 48; ++i) {
+    for (int i = 0; i < 64; ++i) {
       // Each foot planted (ankle 8 cm up), or 12-20 cm up in the air, in each frame.
       auto height = [&] { return u01(rng) < 0.5f ? 0.08f : in(0.12f, 0.2f); };
       PlayerPose a = stance(in(-1, 1), in(-0.35f, 0.25f), in(-0.35f, 0.25f), height(), height(), in(-8, 8));
       PlayerPose b = stance(a.x + in(0, 0.4f), in(-0.35f, 0.25f), in(-0.35f, 0.25f), height(), height(), in(-8, 8));
+      if (i >= 48) {
+        // The last 16: a right leg in the air swinging past a left one near
+        // the midline (the second part of the step, the legs kept apart).
+        const float gap = in(0.0f, 0.02f), left = in(-0.1f, 0.1f), left_h = height();
+        a = stance(in(-1, 1), in(-0.2f, -0.1f), left, left_h, in(0.12f, 0.2f), in(-8, 8), gap);
+        b = stance(a.x + in(0.1f, 0.3f), in(0.1f, 0.18f), left, left_h, in(0.12f, 0.2f), in(-8, 8), gap);
+      }
       a.y = in(-1, 1);
       b.y = a.y + in(-0.1f, 0.1f);
       a.heading = in(-180, 180);
       b.heading = a.heading + in(-15, 15);
       // Half the cases keep the feet where they were, as a planted foot does.
-      if (i % 2 == 0) b.angles = a.angles, b.x = a.x + 0.01f;
+      if (i % 2 == 0 && i < 48) b.angles = a.angles, b.x = a.x + 0.01f;
       const auto t = static_cast<float>(round4(i % 4 == 0 ? 1.0f / 3 : i % 4 == 1 ? 0.5f : i % 4 == 2 ? 2.0f / 3 : in(0.05f, 0.95f)));
       PlayerPose drawn = angle_blend(a, b, t);  // SPEC 4.7 step 1
       drawn.y = a.y + (b.y - a.y) * t;
@@ -266,8 +346,8 @@ TEST(LegBlend, GoldenVectorsForTheClients) {
   std::ifstream file(path);
   ASSERT_TRUE(file.good()) << path;
   const nlohmann::json want = nlohmann::json::parse(file);
-  ASSERT_EQ(want["cases"].size(), 48u);
-  int moved = 0;
+  ASSERT_EQ(want["cases"].size(), 64u);
+  int moved = 0, apart = 0;
   for (std::size_t i = 0; i < want["cases"].size(); ++i) {
     const auto& c = want["cases"][i];
     const std::vector<float> got = step(c);
@@ -278,8 +358,10 @@ TEST(LegBlend, GoldenVectorsForTheClients) {
       changed = changed || std::fabs(got[k] - c["drawn"]["angles"][k].get<float>()) > 1e-3f;
     }
     moved += changed;
+    if (i >= 48) apart += changed;
   }
   EXPECT_GT(moved, 12);  // the vectors exercise the step
+  EXPECT_GE(apart, 8);   // and its second part
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ const pose = (p) => ({ side: 1, unum: 7, state: 1, x: p.x, y: p.y, z: p.z, headi
 
 test('every golden case comes out as the C++ step makes it', () => {
   assert.ok(findLegs(skel), 'the hello skeleton has two legs');
-  let moved = 0;
+  let moved = 0, apart = 0;
   for (const [i, c] of golden.cases.entries()) {
     const o = pose(c.drawn);
     keepFeetOfPlayer(skel, pose(c.a), pose(c.b), c.t, o);
@@ -30,8 +30,10 @@ test('every golden case comes out as the C++ step makes it', () => {
       changed ||= Math.abs(o.angles[k] - c.drawn.angles[k]) > 1e-3;
     }
     moved += changed;
+    if (i >= 48) apart += changed;
   }
   assert.ok(moved > 12, `the cases move legs (${moved})`);
+  assert.ok(apart >= 8, `the last 16 turn a leg out of the other's way (${apart})`);
 });
 
 test('frames, teleports and a skeleton without legs are left alone', () => {

@@ -13,6 +13,11 @@
 // Either is done by swinging the whole leg about its hip (the thigh's three
 // angles; knee and ankle keep theirs) by at most 1 degree: enough for what
 // the blend gets wrong, too little to jerk a leg.
+// Then the legs are kept apart: a leg swinging past the other passes through
+// it in the blend even when both frames hold them apart. A leg in the air
+// turns out at the hip until the boxes' centre lines are half the wider
+// box's width and 1 cm apart, within a room that grows from nothing at
+// either frame (keepApart).
 //
 // Forward kinematics as skeleton.js says: M_j = M_parent * T(offset) *
 // R_local, joint 0 at (0, z, 0) plus its offset; body space X forward, Y up,
@@ -25,6 +30,10 @@ import { axisRotation } from './ground.js';
 export const CONTACT_M = 0.03;       // a sole this low is on the grass
 export const SAME_STANCE_M = 0.3;    // both frames on it and this close: one stance
 export const MAX_SWING_DEG = 1;      // the largest swing of a leg about its hip
+export const APART_M = 0.01;         // legs' centre lines apart beyond half the wider box
+export const MAX_APART_DEG = 8;      // the largest turn of a leg out of the other's way
+export const APART_SPEED_DEG = 54;   // turns out only below this thigh turn per frame
+export const APART_TRAVEL_M = 0.4;   // nor with its ankle travelling this far about the root
 
 const DEG = Math.PI / 180;
 const legsOf = new WeakMap();        // skeleton -> [leg, leg] | null
@@ -121,24 +130,28 @@ export function jointAngles(dofs, r, out) {
   return out;
 }
 
-// Scratch: one chain's rotations and positions.
-const S = {
+// One chain's rotations and positions (body space).
+const chain = () => ({
   rRoot: new Float64Array(9), rThigh: new Float64Array(9), rShin: new Float64Array(9), rFoot: new Float64Array(9),
+  pRoot: [0, 0, 0], pThigh: [0, 0, 0], pShin: [0, 0, 0], pFoot: [0, 0, 0],
+});
+// Scratch: a chain, and what the steps work with.
+const S = Object.assign(chain(), {
   local: new Float64Array(9), tmp: new Float64Array(9), swing: new Float64Array(9), turned: new Float64Array(9),
-  pRoot: [0, 0, 0], pThigh: [0, 0, 0], pShin: [0, 0, 0], pFoot: [0, 0, 0], v: [0, 0, 0],
-  deg: [0, 0, 0],
-};
+  v: [0, 0, 0], deg: [0, 0, 0],
+});
+const bothLegs = [chain(), chain()];
 
-// Poses one leg of `p` (angles, root height z): fills S's rotations and
-// positions (body space) of root, thigh, shin and foot.
-function poseLeg(skel, leg, p) {
+// Poses one leg of `p` (angles, root height z): fills `C`'s rotations and
+// positions of root, thigh, shin and foot (S's by default).
+function poseLeg(skel, leg, p, C = S) {
   const J = skel.joints;
   const root = J[0];
-  localRotation(root, p.angles, S.rRoot);
-  S.pRoot[0] = root.offset[0]; S.pRoot[1] = root.offset[1] + p.z; S.pRoot[2] = root.offset[2];
-  link(J[leg.thigh], p.angles, S.rRoot, S.pRoot, S.rThigh, S.pThigh);
-  link(J[leg.shin], p.angles, S.rThigh, S.pThigh, S.rShin, S.pShin);
-  link(J[leg.foot], p.angles, S.rShin, S.pShin, S.rFoot, S.pFoot);
+  localRotation(root, p.angles, C.rRoot);
+  C.pRoot[0] = root.offset[0]; C.pRoot[1] = root.offset[1] + p.z; C.pRoot[2] = root.offset[2];
+  link(J[leg.thigh], p.angles, C.rRoot, C.pRoot, C.rThigh, C.pThigh);
+  link(J[leg.shin], p.angles, C.rThigh, C.pThigh, C.rShin, C.pShin);
+  link(J[leg.foot], p.angles, C.rShin, C.pShin, C.rFoot, C.pFoot);
 }
 
 // A child joint's rotation `r` and position `pos` from its parent's.
@@ -148,17 +161,17 @@ function link(joint, angles, rp, pp, r, pos) {
   mul(rp, localRotation(joint, angles, S.local), r);
 }
 
-// The foot box's lowest corner above the grass (after poseLeg).
-function soleHeight(skel, leg) {
+// The foot box's lowest corner above the grass (after poseLeg into `C`).
+function soleHeight(skel, leg, C = S) {
   const seg = skel.joints[leg.foot].segment;
-  let low = S.pFoot[1];
+  let low = C.pFoot[1];
   if (seg.shape !== 'box') return low;
-  const r = S.rFoot;
+  const r = C.rFoot;
   for (let c = 0; c < 8; c++) {
     const x = seg.center[0] + ((c & 1) ? 0.5 : -0.5) * seg.size[0];
     const y = seg.center[1] + ((c & 2) ? 0.5 : -0.5) * seg.size[1];
     const z = seg.center[2] + ((c & 4) ? 0.5 : -0.5) * seg.size[2];
-    low = Math.min(low, S.pFoot[1] + r[3] * x + r[4] * y + r[5] * z);
+    low = Math.min(low, C.pFoot[1] + r[3] * x + r[4] * y + r[5] * z);
   }
   return low;
 }
@@ -182,11 +195,22 @@ const hip = [0, 0, 0], ankle = [0, 0, 0], target = [0, 0, 0];
 export function keepFeetOfPlayer(skel, pa, pb, t, o) {
   const legs = findLegs(skel);
   if (!legs || !(t > 0 && t < 1)) return;
-  const J = skel.joints;
-  for (const leg of legs) {
+  for (let i = 0; i < 2; i++) {
+    const leg = legs[i];
     const fa = place(skel, leg, pa, placeA), fb = place(skel, leg, pb, placeB);
     const ca = fa.sole < CONTACT_M, cb = fb.sole < CONTACT_M;
-    if (!ca && !cb) continue;   // in the air in both: the blend's arc
+    inAir[i] = !ca && !cb;
+    // The ankle's travel about the root over the frame, and the thigh's own
+    // turn (deg): the room for keepApart (rad), none when the ankle travels
+    // APART_TRAVEL_M (the turn would carry it further), else growing from
+    // nothing at either frame at the rate the thigh's turn leaves below
+    // APART_SPEED_DEG, up to MAX_APART_DEG.
+    const travel = Math.hypot(fb.ankle[0] - pb.x - (fa.ankle[0] - pa.x), fb.ankle[1] - pb.z - (fa.ankle[1] - pa.z),
+      fb.ankle[2] - pb.y - (fa.ankle[2] - pa.y));
+    const speed = thighTurnDeg(skel.joints[leg.thigh], pa, pb);
+    room[i] = travel >= APART_TRAVEL_M ? 0
+      : Math.min(MAX_APART_DEG, Math.max(0, APART_SPEED_DEG - speed) * Math.min(t, 1 - t)) * DEG;
+    if (inAir[i]) continue;   // in the air in both: the blend's arc
     poseLeg(skel, leg, o);
     hip[0] = S.pThigh[0]; hip[1] = S.pThigh[1]; hip[2] = S.pThigh[2];
     ankle[0] = S.pFoot[0]; ankle[1] = S.pFoot[1]; ankle[2] = S.pFoot[2];
@@ -213,26 +237,144 @@ export function keepFeetOfPlayer(skel, pa, pb, t, o) {
     if (sn < 1e-6) continue;
     const angle = Math.min(Math.atan2(sn, (ux * vx + uy * vy + uz * vz) / (lu * lv)), MAX_SWING_DEG * DEG);
     ax /= sn; ay /= sn; az /= sn;
-    const c = Math.cos(angle), s = Math.sin(angle), k = 1 - c;
-    const R = S.swing;
-    R[0] = c + ax * ax * k;      R[1] = ax * ay * k - az * s; R[2] = ax * az * k + ay * s;
-    R[3] = ay * ax * k + az * s; R[4] = c + ay * ay * k;      R[5] = ay * az * k - ax * s;
-    R[6] = az * ax * k - ay * s; R[7] = az * ay * k + ax * s; R[8] = c + az * az * k;
-    // The thigh's new local rotation: root^T * swing * (root * local).
-    mulT(S.rRoot, mul(R, S.rThigh, S.tmp), S.turned);
-    const joint = J[leg.thigh];
-    jointAngles(joint.dofs, S.turned, S.deg);
-    for (let d = 0; d < 3; d++) {
-      const cur = o.angles[joint.angleIndex + d];
-      // The same turn, not one the other way round the circle.
-      let next = cur + (((S.deg[d] - cur) % 360 + 540) % 360 - 180);
-      // A hello's limit that is not two numbers is no limit; one given upside
-      // down is read as the quantizer reads it (its top no lower than its bottom).
-      const lim = joint.limits[d];
-      if (Array.isArray(lim) && Number.isFinite(lim[0]) && Number.isFinite(lim[1])) {
-        next = Math.min(Math.max(next, lim[0]), Math.max(lim[0], lim[1]));
+    turnThigh(skel.joints[leg.thigh], S, ax, ay, az, angle, o);
+  }
+  keepApart(skel, legs, o);
+}
+
+const inAir = [false, false], room = [0, 0];
+const rotA = new Float64Array(9), rotB = new Float64Array(9);
+
+// The rotation (deg) between a thigh's local rotations in two poses.
+function thighTurnDeg(joint, pa, pb) {
+  localRotation(joint, pa.angles, rotA);
+  localRotation(joint, pb.angles, rotB);
+  let tr = 0;
+  for (let k = 0; k < 9; k++) tr += rotA[k] * rotB[k];
+  return Math.acos(Math.max(-1, Math.min(1, 0.5 * (tr - 1)))) / DEG;
+}
+
+// Turns a thigh by `angle` (rad) about the unit axis (ax, ay, az) through its
+// hip (body space); `C` holds the leg as posed on `o`.
+function turnThigh(joint, C, ax, ay, az, angle, o) {
+  const c = Math.cos(angle), s = Math.sin(angle), k = 1 - c;
+  const R = S.swing;
+  R[0] = c + ax * ax * k;      R[1] = ax * ay * k - az * s; R[2] = ax * az * k + ay * s;
+  R[3] = ay * ax * k + az * s; R[4] = c + ay * ay * k;      R[5] = ay * az * k - ax * s;
+  R[6] = az * ax * k - ay * s; R[7] = az * ay * k + ax * s; R[8] = c + az * az * k;
+  // The thigh's new local rotation: root^T * rotation * (root * local).
+  mulT(C.rRoot, mul(R, C.rThigh, S.tmp), S.turned);
+  jointAngles(joint.dofs, S.turned, S.deg);
+  for (let d = 0; d < 3; d++) {
+    const cur = o.angles[joint.angleIndex + d];
+    // The same turn, not one the other way round the circle.
+    let next = cur + (((S.deg[d] - cur) % 360 + 540) % 360 - 180);
+    // A hello's limit that is not two numbers is no limit; one given upside
+    // down is read as the quantizer reads it (its top no lower than its bottom).
+    const lim = joint.limits[d];
+    if (Array.isArray(lim) && Number.isFinite(lim[0]) && Number.isFinite(lim[1])) {
+      next = Math.min(Math.max(next, lim[0]), Math.max(lim[0], lim[1]));
+    }
+    o.angles[joint.angleIndex + d] = next;
+  }
+}
+
+// A segment's box centre line (its longest axis, end to end) posed by
+// rotation `r` at `pos`, into from/to; returns half its larger other side,
+// or -1 when the segment is not a box.
+const half = [0, 0, 0], end = [0, 0, 0];
+function centreLine(seg, r, pos, from, to) {
+  if (!seg || seg.shape !== 'box') return -1;
+  for (let k = 0; k < 3; k++) half[k] = 0.5 * seg.size[k];
+  const axis = half[0] >= half[1] && half[0] >= half[2] ? 0 : half[1] >= half[2] ? 1 : 2;
+  for (let e = 0; e < 2; e++) {
+    const out = e === 0 ? from : to;
+    for (let k = 0; k < 3; k++) end[k] = seg.center[k];
+    end[axis] += (e === 0 ? -1 : 1) * half[axis];
+    apply(r, end, out);
+    out[0] += pos[0]; out[1] += pos[1]; out[2] += pos[2];
+  }
+  return Math.max(half[(axis + 1) % 3], half[(axis + 2) % 3]);
+}
+
+// Closest points of segments p1q1 and p2q2 (Ericson, Real-Time Collision
+// Detection, 5.1.9), as anim/segment_distance.hpp: into c1, c2; returns the distance.
+const d1 = [0, 0, 0], d2 = [0, 0, 0], r12 = [0, 0, 0];
+const dot = (u, v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+const clamp01 = (v) => Math.min(Math.max(v, 0), 1);
+export function closestPoints(p1, q1, p2, q2, c1, c2) {
+  for (let k = 0; k < 3; k++) { d1[k] = q1[k] - p1[k]; d2[k] = q2[k] - p2[k]; r12[k] = p1[k] - p2[k]; }
+  const r = r12;
+  const a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+  let s = 0, t = 0;
+  if (a <= 1e-9 && e > 1e-9) {
+    t = clamp01(f / e);
+  } else if (a > 1e-9) {
+    const c = dot(d1, r);
+    if (e <= 1e-9) {
+      s = clamp01(-c / a);
+    } else {
+      const b = dot(d1, d2), denom = a * e - b * b;
+      s = denom > 1e-9 ? clamp01((b * f - c * e) / denom) : 0;
+      t = (b * s + f) / e;
+      if (t < 0) { t = 0; s = clamp01(-c / a); } else if (t > 1) { t = 1; s = clamp01((b - c) / a); }
+    }
+  }
+  for (let k = 0; k < 3; k++) { c1[k] = p1[k] + d1[k] * s; c2[k] = p2[k] + d2[k] * t; }
+  return Math.hypot(c1[0] - c2[0], c1[1] - c2[1], c1[2] - c2[2]);
+}
+
+const lineFrom = [[0, 0, 0], [0, 0, 0]], lineTo = [[0, 0, 0], [0, 0, 0]];
+const near = [[0, 0, 0], [0, 0, 0]], nearest = [[0, 0, 0], [0, 0, 0]];
+const share = [0, 0];
+const PAIRS = [['thigh', 'rThigh', 'pThigh'], ['shin', 'rShin', 'pShin'], ['foot', 'rFoot', 'pFoot']];
+
+// The step's second part: the legs' boxes kept APART_M beyond half the
+// wider box's width, thighs, shins and feet. Twice: a leg in the air
+// (share 1; one on the grass in one frame in proportion to its sole's
+// height from CONTACT_M to twice that; one on the grass, 0) turns out at
+// the hip, away from the other hip, by its share of the shortfall of the
+// pair furthest inside, within what is left of its room.
+function keepApart(skel, legs, o) {
+  const J = skel.joints;
+  for (let round = 0; round < 2; round++) {
+    for (let i = 0; i < 2; i++) {
+      poseLeg(skel, legs[i], o, bothLegs[i]);
+      const sole = soleHeight(skel, legs[i], bothLegs[i]);
+      share[i] = inAir[i] ? 1 : Math.min(Math.max((sole - CONTACT_M) / CONTACT_M, 0), 1);
+    }
+    const shares = share[0] + share[1];
+    if (shares <= 0) return;
+    let shortfall = 0;
+    for (let pair = 0; pair < 3; pair++) {
+      const part = PAIRS[pair][0], rot = PAIRS[pair][1], pos = PAIRS[pair][2];
+      const w0 = centreLine(J[legs[0][part]].segment, bothLegs[0][rot], bothLegs[0][pos], lineFrom[0], lineTo[0]);
+      const w1 = centreLine(J[legs[1][part]].segment, bothLegs[1][rot], bothLegs[1][pos], lineFrom[1], lineTo[1]);
+      if (w0 < 0 || w1 < 0) continue;
+      const need = APART_M + Math.max(w0, w1) - closestPoints(lineFrom[0], lineTo[0], lineFrom[1], lineTo[1], near[0], near[1]);
+      if (need > shortfall) {
+        shortfall = need;
+        for (let k = 0; k < 3; k++) { nearest[0][k] = near[0][k]; nearest[1][k] = near[1][k]; }
       }
-      o.angles[joint.angleIndex + d] = next;
+    }
+    if (shortfall <= 0) return;
+    for (let i = 0; i < 2; i++) {
+      if (share[i] <= 0) continue;
+      const hp = bothLegs[i].pThigh, other = bothLegs[1 - i].pThigh;
+      const lx = nearest[i][0] - hp[0], ly = nearest[i][1] - hp[1], lz = nearest[i][2] - hp[2];
+      let cx = hp[0] - other[0], cy = hp[1] - other[1], cz = hp[2] - other[2];
+      const width = Math.hypot(cx, cy, cz);
+      if (width < 1e-4) continue;
+      cx /= width; cy /= width; cz /= width;
+      // The axis lever x across; its length is the outward travel per radian.
+      let ax = ly * cz - lz * cy, ay = lz * cx - lx * cz, az = lx * cy - ly * cx;
+      const reach = Math.hypot(ax, ay, az);
+      if (reach < 1e-3) continue;
+      const angle = Math.min(shortfall * share[i] / shares / reach, room[i]);
+      if (!(angle > 0)) continue;
+      room[i] -= angle;
+      ax /= reach; ay /= reach; az /= reach;
+      turnThigh(J[legs[i].thigh], bothLegs[i], ax, ay, az, angle, o);
     }
   }
 }
