@@ -112,7 +112,8 @@ void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a) {
 // Legs keep out of each other: the thighs' and the shins' centre lines
 // (capsules of the boxes' half widths, plus a margin for the stream's
 // quantization) stay apart. A leg in the air is turned out at the hip
-// (abduction) until they are, in up to three turns. True when a leg is
+// (abduction) until they are, in up to three turns; with both in the air,
+// the one further across. True when a leg is
 // planted and the legs were too close (still, or before the last turn, which
 // is not checked again): the caller then turns the planted knees out
 // (LegPoseJob's knee_out_deg). Checking the last turn too gave the same
@@ -148,8 +149,18 @@ bool separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]) {
     const float need = std::max({(kThighGap - thighs) / 0.3f, (kShinGap - shins) / 0.65f,
                                  (kFootGap - feet) / 0.85f});  // rad of abduction
     if (need <= 0) return false;
-    const int i = !planted[0] ? 0 : !planted[1] ? 1 : -1;
+    int i = !planted[0] ? 0 : !planted[1] ? 1 : -1;
     if (i < 0) return true;
+    if (!planted[0] && !planted[1]) {
+      // Both feet up: the leg further across the body (its knee further
+      // past its hip towards the other side) turns out. Turning the right
+      // one always left game 1's largest case, a crossover step in a turn,
+      // 3.1 cm inside: the right leg already abducted 14 deg, the left at
+      // its adduction limit (anim/README.md).
+      const glm::vec3 right = pelvis * glm::vec3(0, 0, 1);
+      const float across_r = glm::dot(hip[0] - knee[0], right), across_l = glm::dot(knee[1] - hip[1], right);
+      i = across_l > across_r ? 1 : 0;
+    }
     const int h = i == 0 ? dof::kRHip : dof::kLHip;
     const float turn = std::min(need / kDeg + 1.0f, 25.0f);
     a[static_cast<std::size_t>(h + 1)] += i == 0 ? -turn : turn;  // right abducts towards -X, left towards +X

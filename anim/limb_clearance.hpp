@@ -23,7 +23,8 @@ float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards);
 void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a);
 
 // The legs' centre lines (thighs, shins, feet) keep half a box width apart
-// plus a margin: a leg in the air is turned out at the hip. True when a leg
+// plus a margin: a leg in the air is turned out at the hip (with both in
+// the air, the one further across the body's midline). True when a leg
 // in `planted` ([0] right, [1] left) is on the grass and the legs were too
 // close: the caller then turns the planted knees out (LegPoseJob's
 // knee_out_deg). `a`: the pose's angles (deg); `pelvis_h`: the pelvis

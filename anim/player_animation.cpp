@@ -122,8 +122,18 @@ void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float p
   clamp_to_limits(skel, a);
   if (std::equal(held.begin(), held.end(), a.begin())) return;
   for (int h : {dof::kRHip, dof::kLHip}) {
-    if (rotation_between(kZxy, &last[static_cast<std::size_t>(h)], &a[static_cast<std::size_t>(h)]) >
-        kMaxLegStepDeg + kSeparateAgainDeg) {
+    const auto k = static_cast<std::size_t>(h);
+    constexpr float kMostDeg = kMaxLegStepDeg + kSeparateAgainDeg;
+    bool fast = rotation_between(kZxy, &last[k], &a[k]) > kMostDeg;
+    // Nor a third of the frame as the clients blend it (their angles
+    // linearly at 60 Hz): a blend of Euler angles turns unevenly, and
+    // one hip's last third turned 20.3 deg (60.9 deg per 50 ms) when the
+    // leg further across turned out.
+    float at[4][3];
+    for (int n = 0; n < 4; ++n)
+      for (std::size_t d = 0; d < 3; ++d) at[n][d] = last[k + d] + (a[k + d] - last[k + d]) * static_cast<float>(n) / 3.0f;
+    for (int n = 0; n < 3 && !fast; ++n) fast = rotation_between(kZxy, at[n], at[n + 1]) > kMostDeg / 3.0f;
+    if (fast) {
       std::copy(held.begin(), held.end(), a.begin());
       return;
     }
