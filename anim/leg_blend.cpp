@@ -206,12 +206,12 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
     const glm::mat3 swing = axis_rotation(axis / s, angle);
     turn_thigh(leg, pelvis, thigh, swing, q);
   }
-  // How far each leg may turn out of the other's way (rad): not at all
-  // when its ankle travels kApartTravelM or more about the root over the
-  // frame (the turn would carry it further: more ankle pops); else growing
-  // from 0 at either frame at the rate its thigh's own turn over the frame
-  // leaves below kApartSpeedDeg, up to kMaxApartDeg, so that the legs never
-  // turn faster than the frames let them.
+  // How far each leg may turn out of the other's way (rad): growing from 0
+  // at either frame at the rate its thigh's own turn over the frame leaves
+  // below kApartSpeedDeg, so that the legs never turn faster than the
+  // frames let them, and at the rate its ankle's travel about the root
+  // leaves below kApartTravelM (a fast foot carried sideways reads as a
+  // pop), up to kMaxApartDeg.
   float room[2];
   for (std::size_t i = 0; i < 2; ++i) {
     const Joint& th = leg_[i].thigh;
@@ -222,9 +222,12 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
                      ra[1][1] * rb[1][1] + ra[1][2] * rb[1][2] + ra[2][0] * rb[2][0] + ra[2][1] * rb[2][1] +
                      ra[2][2] * rb[2][2];
     const float speed = pm::acos(std::clamp(0.5f * (tr - 1.0f), -1.0f, 1.0f)) / kDeg;
-    room[i] = travel[i] >= kApartTravelM
-                  ? 0.0f
-                  : std::min(kMaxApartDeg, std::max(0.0f, kApartSpeedDeg - speed) * std::min(t, 1.0f - t)) * kDeg;
+    // The turn's sideways move of the ankle (about kApartLeverM from the
+    // hip) added to its travel stays within kApartTravelM a frame.
+    const float sideways = std::sqrt(std::max(0.0f, kApartTravelM * kApartTravelM - travel[i] * travel[i]));
+    const float ramp = std::min(t, 1.0f - t);
+    room[i] = std::min({kMaxApartDeg * kDeg, std::max(0.0f, kApartSpeedDeg - speed) * kDeg * ramp,
+                        sideways / kApartLeverM * ramp});
   }
   keep_apart(in_air, room, o);
 }

@@ -26,9 +26,9 @@
 // the other hip, until the centre lines of the two thighs, shins and feet
 // are kApartM beyond half the wider box's width. The turn may grow only
 // from nothing at either frame, at the rate the thigh's own turn over the
-// frame leaves below kApartSpeedDeg, and up to kMaxApartDeg; a leg whose
-// ankle travels kApartTravelM about the root over the frame is not turned
-// (it would be carried further: more ankle pops). An earlier version (damped least squares on hip
+// frame leaves below kApartSpeedDeg, and at the rate its ankle's travel
+// about the root leaves below kApartTravelM, up to kMaxApartDeg (a fast
+// foot carried sideways reads as an ankle pop). An earlier version (damped least squares on hip
 // and knee) also chased the blend's error in height, which step 3 (rest
 // on the grass) deals with, and bent the knees for it: legs jerked at
 // 60 Hz (86 deg per 50 ms). anim/README.md has what this one gives.
@@ -82,9 +82,11 @@ class LegBlend {
   // frame; anim-quality's limit is 60), and the turn grows at most at the
   // difference per frame from either frame.
   static constexpr float kApartSpeedDeg = 54.0f;
-  // A leg whose ankle travels this far about the root over the frame does
-  // not turn out (m; anim-quality counts 0.6 as an ankle pop).
-  static constexpr float kApartTravelM = 0.4f;
+  // The ankle's travel about the root over the frame and the turn's
+  // sideways move of it together (m; anim-quality counts 0.6 as an ankle
+  // pop), the turn's move taken at this distance from the hip (m).
+  static constexpr float kApartTravelM = 0.47f;
+  static constexpr float kApartLeverM = 0.85f;
 
  private:
   struct Joint {

@@ -306,17 +306,20 @@ TEST(LegBlend, GoldenVectorsForTheClients) {
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
     auto in = [&](float lo, float hi) { return lo + (hi - lo) * u01(rng); };
     nlohmann::json cases = nlohmann::json::array();
-    for (int i = 0; i < 64; ++i) {
+    for (int i = 0; i < 72; ++i) {
       // Each foot planted (ankle 8 cm up), or 12-20 cm up in the air, in each frame.
       auto height = [&] { return u01(rng) < 0.5f ? 0.08f : in(0.12f, 0.2f); };
       PlayerPose a = stance(in(-1, 1), in(-0.35f, 0.25f), in(-0.35f, 0.25f), height(), height(), in(-8, 8));
       PlayerPose b = stance(a.x + in(0, 0.4f), in(-0.35f, 0.25f), in(-0.35f, 0.25f), height(), height(), in(-8, 8));
       if (i >= 48) {
-        // The last 16: a right leg in the air swinging past a left one near
-        // the midline (the second part of the step, the legs kept apart).
+        // The last 24: a right leg in the air swinging past a left one near
+        // the midline (the second part of the step, the legs kept apart);
+        // the last 8 swing far enough for the ankle's travel to bound the turn.
+        const bool far = i >= 64;
         const float gap = in(0.0f, 0.02f), left = in(-0.1f, 0.1f), left_h = height();
-        a = stance(in(-1, 1), in(-0.2f, -0.1f), left, left_h, in(0.12f, 0.2f), in(-8, 8), gap);
-        b = stance(a.x + in(0.1f, 0.3f), in(0.1f, 0.18f), left, left_h, in(0.12f, 0.2f), in(-8, 8), gap);
+        a = stance(in(-1, 1), far ? in(-0.26f, -0.22f) : in(-0.2f, -0.1f), left, left_h, in(0.12f, 0.2f), in(-8, 8), gap);
+        b = stance(a.x + in(0.1f, 0.3f), far ? in(0.18f, 0.22f) : in(0.1f, 0.18f), left, left_h, in(0.12f, 0.2f),
+                   in(-8, 8), gap);
       }
       a.y = in(-1, 1);
       b.y = a.y + in(-0.1f, 0.1f);
@@ -346,7 +349,7 @@ TEST(LegBlend, GoldenVectorsForTheClients) {
   std::ifstream file(path);
   ASSERT_TRUE(file.good()) << path;
   const nlohmann::json want = nlohmann::json::parse(file);
-  ASSERT_EQ(want["cases"].size(), 64u);
+  ASSERT_EQ(want["cases"].size(), 72u);
   int moved = 0, apart = 0;
   for (std::size_t i = 0; i < want["cases"].size(); ++i) {
     const auto& c = want["cases"][i];

@@ -33,7 +33,7 @@ test('every golden case comes out as the C++ step makes it', () => {
     if (i >= 48) apart += changed;
   }
   assert.ok(moved > 12, `the cases move legs (${moved})`);
-  assert.ok(apart >= 8, `the last 16 turn a leg out of the other's way (${apart})`);
+  assert.ok(apart >= 8, `the last 24 turn a leg out of the other's way (${apart})`);
 });
 
 test('frames, teleports and a skeleton without legs are left alone', () => {

@@ -33,7 +33,8 @@ export const MAX_SWING_DEG = 1;      // the largest swing of a leg about its hip
 export const APART_M = 0.01;         // legs' centre lines apart beyond half the wider box
 export const MAX_APART_DEG = 8;      // the largest turn of a leg out of the other's way
 export const APART_SPEED_DEG = 54;   // turns out only below this thigh turn per frame
-export const APART_TRAVEL_M = 0.4;   // nor with its ankle travelling this far about the root
+export const APART_TRAVEL_M = 0.47;  // its ankle's travel about the root and the turn's move together
+export const APART_LEVER_M = 0.85;   // the turn's move taken this far from the hip
 
 const DEG = Math.PI / 180;
 const legsOf = new WeakMap();        // skeleton -> [leg, leg] | null
@@ -201,15 +202,17 @@ export function keepFeetOfPlayer(skel, pa, pb, t, o) {
     const ca = fa.sole < CONTACT_M, cb = fb.sole < CONTACT_M;
     inAir[i] = !ca && !cb;
     // The ankle's travel about the root over the frame, and the thigh's own
-    // turn (deg): the room for keepApart (rad), none when the ankle travels
-    // APART_TRAVEL_M (the turn would carry it further), else growing from
-    // nothing at either frame at the rate the thigh's turn leaves below
-    // APART_SPEED_DEG, up to MAX_APART_DEG.
+    // turn (deg): the room for keepApart (rad) grows from nothing at either
+    // frame at the rate the thigh's turn leaves below APART_SPEED_DEG and
+    // the rate the ankle's travel leaves below APART_TRAVEL_M (a fast foot
+    // carried sideways reads as a pop), up to MAX_APART_DEG.
     const travel = Math.hypot(fb.ankle[0] - pb.x - (fa.ankle[0] - pa.x), fb.ankle[1] - pb.z - (fa.ankle[1] - pa.z),
       fb.ankle[2] - pb.y - (fa.ankle[2] - pa.y));
     const speed = thighTurnDeg(skel.joints[leg.thigh], pa, pb);
-    room[i] = travel >= APART_TRAVEL_M ? 0
-      : Math.min(MAX_APART_DEG, Math.max(0, APART_SPEED_DEG - speed) * Math.min(t, 1 - t)) * DEG;
+    const sideways = Math.sqrt(Math.max(0, APART_TRAVEL_M * APART_TRAVEL_M - travel * travel));
+    const ramp = Math.min(t, 1 - t);
+    room[i] = Math.min(MAX_APART_DEG * DEG, Math.max(0, APART_SPEED_DEG - speed) * DEG * ramp,
+      sideways / APART_LEVER_M * ramp);
     if (inAir[i]) continue;   // in the air in both: the blend's arc
     poseLeg(skel, leg, o);
     hip[0] = S.pThigh[0]; hip[1] = S.pThigh[1]; hip[2] = S.pThigh[2];
