@@ -13,9 +13,9 @@
 // --compare animates each log in both modes and prints the metrics side by
 // side (the picture then shows the mocap mode). --draw-rate: the clients'
 // drawing rate measured beside the 20 Hz frames (a multiple of 20, default 60);
-// drawn as the clients draw it (the angle blend, then the feet,
-// anim/leg_blend.hpp); --leg-blend none leaves out the feet, to measure what
-// they give. MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the
+// drawn as the clients draw it (the angle blend, then the feet and the legs
+// kept apart, anim/leg_blend.hpp); --leg-blend none leaves that step out, to
+// measure what it gives. MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the
 // drawn frames' sliding by the 20 Hz feet around them (stderr).
 // --contact-sheet: the close-up contact sheet of the first log (a sprint, a
 // kick, a turn, every frame of a second, contact_sheet.hpp), default
