@@ -76,12 +76,16 @@ describe('the director on the page', { timeout: 420000 }, () => {
       assert.ok(play.log[i].seq - play.log[i - 1].seq >= 30, `cuts too close: ${JSON.stringify(play.log)}`);
     }
     // Smooth: over 40 pictures (4 s at most) without a cut, the camera's acceleration stays
-    // small (the ball's 10 Hz steps would show as spikes).
+    // small (the ball's 10 Hz steps would show as spikes). Measured on the camera's own
+    // clock, the time each picture moved it on: a browser stalled by a loaded machine
+    // moves it on at most 0.1 s a picture, and on the wall clock that read as a jerk
+    // (76 m/s² in a CI run with another test beside it; 20-40 unloaded).
     const path = await page.evaluate(() => new Promise((resolve) => {
       const out = [];
       const cuts0 = window.matchcast.stats().director.cuts;
       const step = (t) => {
-        out.push({ t, p: window.matchcast.cameraPosition(), cuts: window.matchcast.stats().director.cuts - cuts0 });
+        const c = window.matchcast.cameraStep();
+        out.push({ t, p: c.p, dt: c.dt, cuts: window.matchcast.stats().director.cuts - cuts0 });
         if (out.length < 40 && t - out[0].t < 4000) requestAnimationFrame(step); else resolve(out);
       };
       requestAnimationFrame(step);
@@ -90,13 +94,14 @@ describe('the director on the page', { timeout: 420000 }, () => {
     if (calm.length > 10) {
       let worst = 0;
       for (let i = 2; i < calm.length; i++) {
-        const dt1 = (calm[i].t - calm[i - 1].t) / 1000, dt0 = (calm[i - 1].t - calm[i - 2].t) / 1000;
+        const dt1 = calm[i].dt, dt0 = calm[i - 1].dt;
         if (dt1 <= 0 || dt0 <= 0) continue;
         for (let k = 0; k < 3; k++) {
           const v1 = (calm[i].p[k] - calm[i - 1].p[k]) / dt1, v0 = (calm[i - 1].p[k] - calm[i - 2].p[k]) / dt0;
           worst = Math.max(worst, Math.abs(v1 - v0) / ((dt1 + dt0) / 2));
         }
       }
+      console.log(`# camera: ${worst.toFixed(1)} m/s² at most over ${calm.length} pictures`);
       assert.ok(worst < 60, `the camera jerks: ${worst.toFixed(1)} m/s² at most`);
     }
   });

@@ -361,6 +361,7 @@ for (const [k, v] of Object.entries(toggles)) document.querySelector(`[data-togg
 // --- the render loop --------------------------------------------------------
 
 let lastNow = performance.now();
+let lastDt = 0;   // the seconds the last picture moved the cameras on (at most 0.1)
 const fpsWindow = [];
 let renderMs = 0, updateMs = 0;
 let lastStats = 0, lastBytes = 0, kbps = 0, lastAdapt = performance.now() + 2000;
@@ -368,6 +369,7 @@ let lastStats = 0, lastBytes = 0, kbps = 0, lastAdapt = performance.now() + 2000
 function frameLoop(now) {
   const dt = Math.min(0.1, (now - lastNow) / 1000);
   lastNow = now;
+  lastDt = dt;
   stage.resize();
   // Live frames come from the jitter buffer; a time-shifted picture from the
   // kept history. The buffer is sampled either way so that it stays current.
@@ -446,6 +448,9 @@ window.matchcast = Object.freeze({
     x: p.x, y: p.y, z: p.z, heading: p.heading })) : []),
   ball: () => (view ? { ...view.ball } : null),
   cameraPosition: () => stage.camera.position.toArray(),
+  // The camera with the time the last picture moved it on: its own clock,
+  // which a stalled browser holds to 0.1 s a picture.
+  cameraStep: () => ({ p: stage.camera.position.toArray(), dt: lastDt }),
   setCamera: (id) => app.setCamera(id),
   select: (key) => select(key),
   toggle: (name) => app.toggle(name),
