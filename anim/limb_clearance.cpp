@@ -8,12 +8,16 @@
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/local_to_model_job.hpp"
+#include "anim/player_animation.hpp"
 #include "anim/segment_distance.hpp"
 
 namespace mc::anim {
 namespace {
 
 const std::string kYzx = "yzx", kZxy = "zxy", kZ = "z", kZx = "zx";
+// How far past the legs' joint speed limit a hip may turn to keep the legs
+// apart after that limit (deg; separate_legs_again).
+constexpr float kSeparateAgainDeg = 8.0f;
 
 }  // namespace
 
@@ -166,6 +170,49 @@ bool separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]) {
     a[static_cast<std::size_t>(h + 1)] += i == 0 ? -turn : turn;  // right abducts towards -X, left towards +X
   }
   return planted[0] || planted[1];
+}
+
+void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, std::span<const float> last,
+                         const AnkleTravel* travel, const bool planted[2], std::span<float> a) {
+  std::array<float, dof::kCount> held;
+  std::copy_n(a.begin(), dof::kCount, held.begin());
+  // One try with the legs in `fixed` held: the hip that would turn too
+  // fast (0 right, 1 left; the legs are then as they were), or -1.
+  auto attempt = [&](const bool fixed[2]) {
+    separate_legs(a, pelvis_h, fixed);
+    clamp_to_limits(skel, a);
+    for (int side = 0; side < 2; ++side) {
+      const auto k = static_cast<std::size_t>(side == 0 ? dof::kRHip : dof::kLHip);
+      constexpr float kMostDeg = kMaxLegStepDeg + kSeparateAgainDeg;
+      bool fast = rotation_between(kZxy, &last[k], &a[k]) > kMostDeg;
+      // Nor a third of the frame as the clients blend it (their angles
+      // linearly at 60 Hz): a blend of Euler angles turns unevenly, and
+      // one hip's last third turned 20.3 deg (60.9 deg per 50 ms) when
+      // the leg further across turned out.
+      float at[4][3];
+      for (int n = 0; n < 4; ++n)
+        for (std::size_t d = 0; d < 3; ++d)
+          at[n][d] = last[k + d] + (a[k + d] - last[k + d]) * static_cast<float>(n) / 3.0f;
+      for (int n = 0; n < 3 && !fast; ++n) fast = rotation_between(kZxy, at[n], at[n + 1]) > kMostDeg / 3.0f;
+      if (fast) {
+        std::copy(held.begin(), held.end(), a.begin());
+        return side;
+      }
+    }
+    return -1;
+  };
+  const int too_fast = attempt(planted);
+  // With both feet up, the leg that the speed limit holds may be the one
+  // further across: then the other one turns out instead (game 1 seq 8679,
+  // legs crossed in a flight phase, thighs 3.1 cm inside).
+  if (too_fast >= 0 && !planted[0] && !planted[1]) {
+    const bool hold[2] = {too_fast == 0, too_fast == 1};
+    if (attempt(hold) >= 0) return;
+  } else if (too_fast >= 0) {
+    return;
+  }
+  if (std::equal(held.begin(), held.end(), a.begin())) return;
+  if (travel != nullptr) limit_ankle_travel(skel, body, pelvis_h, *travel, held, a, kSeparationSlackM);
 }
 
 }  // namespace mc::anim

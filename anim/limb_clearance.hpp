@@ -8,9 +8,17 @@
 
 #include <glm/vec3.hpp>
 
+#include "anim/ankle_travel.hpp"
+#include "anim/body_frame.hpp"
 #include "proto/skeleton.hpp"
 
 namespace mc::anim {
+
+// Legs turned out of each other's way may take an ankle this much past a
+// frame's travel (m; the issue's pop is 10 cm further). With 1 mm, legs too
+// close on the two full games rose from 6/10/9 and 2/5/10 to 21/15/11 and
+// 16/13/13; with 4 cm to 11/12/9 and 7/6/10.
+inline constexpr float kSeparationSlackM = 0.07f;
 
 // Signed distance (m) from point `p` to the box of segment `seg`, both in
 // the segment's joint space (negative inside). With `towards`, the unit
@@ -30,5 +38,21 @@ void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a);
 // knee_out_deg). `a`: the pose's angles (deg); `pelvis_h`: the pelvis
 // joint's height (m).
 bool separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]);
+
+// Legs brought together again after separate_legs (by the joint speed
+// limit, or by a whole-body action's leg pose blended over them): a leg in
+// the air is turned out of the other leg's way once more, as long as each
+// hip then turns at most kSeparateAgainDeg past the limit (issue 23's
+// largest change is 60 deg a frame) and, with `travel`, each ankle keeps
+// within a frame's travel (plus kSeparationSlackM), and each third of the
+// clients' blend of a hip within a third of that. Otherwise the legs stay
+// as they were, but for both feet up: then the leg that turned too fast is
+// held and the other one turns out.
+// On the two full games: thighs / shins / feet too close 8/9/10 -> 4/4/3
+// and 2/5/10 -> 0/1/3 at 20 Hz (with a whole-body action's blend, below);
+// with 10 deg the legs' largest change at 60 Hz went to 61.2 deg
+// (anim/README.md).
+void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, std::span<const float> last,
+                         const AnkleTravel* travel, const bool planted[2], std::span<float> a);
 
 }  // namespace mc::anim

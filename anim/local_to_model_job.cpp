@@ -7,6 +7,7 @@
 #include <cstring>
 #include <string>
 
+#include "anim/body_frame.hpp"
 #include "anim/portable_math.hpp"
 
 namespace mc::anim {
@@ -62,6 +63,14 @@ glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
     else mix(c0, c1, s, c);
   }
   return glm::mat3(c0, c1, c2);
+}
+
+float rotation_between(const std::string& dofs, const float* a, const float* b) {
+  const glm::mat3 ra = joint_rotation(dofs, a), rb = joint_rotation(dofs, b);
+  float tr = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) tr += ra[i][k] * rb[i][k];
+  return pm::acos(clampf(0.5f * (tr - 1.0f), -1.0f, 1.0f)) / kDeg;
 }
 
 bool joint_angles(const std::string& dofs, const glm::mat3& r, float out_deg[3]) {

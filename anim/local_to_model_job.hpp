@@ -26,6 +26,11 @@ glm::mat3 joint_rotation(const std::string& dofs, const float* deg);
 // within +-90). False for any other `dofs`.
 bool joint_angles(const std::string& dofs, const glm::mat3& r, float out_deg[3]);
 
+// The angle (deg) of the rotation between two orientations of one joint,
+// each given as its dofs' angles (deg): how far the joint turns from one to
+// the other, whatever the path its angles take.
+float rotation_between(const std::string& dofs, const float* a, const float* b);
+
 struct LocalToModelJob {
   const SkeletonDef* skeleton = nullptr;
   std::span<const float> angles_deg;  // in: dof_count() angles, SkeletonDef order

@@ -32,14 +32,6 @@ constexpr float kAnkleDorsiflexion = 35.0f;  // the ankles' limit (human_skeleto
 // A kick's contact frame lies within this of its contact time (s): the
 // kicking foot moves freely (no ankle travel limit) on that frame only.
 constexpr float kContactFrameS = 0.02f;
-// Legs turned out of each other's way may take an ankle this much past a
-// frame's travel (m; the issue's pop is 10 cm further). With 1 mm, legs too
-// close on the two full games rose from 6/10/9 and 2/5/10 to 21/15/11 and
-// 16/13/13; with 4 cm to 11/12/9 and 7/6/10.
-constexpr float kSeparationSlackM = 0.07f;
-// How far past the legs' joint speed limit a hip may turn to keep the legs
-// apart after that limit (deg; separate_legs_again).
-constexpr float kSeparateAgainDeg = 8.0f;
 // A kick's support foot held up to this far (m, and this high) from its spot
 // as it plants is planted where it is.
 constexpr float kSupportReanchorM = 0.4f;
@@ -61,15 +53,6 @@ void planted_target(const FootState& f, const BodyFrame& body, FootTarget& t) {
   t.ankle_ms[1] = ah;
   t.yaw_deg = -delta_deg(f.yaw, body.heading);
   t.pitch_deg = f.pitch;
-}
-
-// Rotation (deg) between two orientations of one joint.
-float rotation_between(const std::string& dofs, const float* a, const float* b) {
-  const glm::mat3 ra = joint_rotation(dofs, a), rb = joint_rotation(dofs, b);
-  float tr = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) tr += ra[i][k] * rb[i][k];
-  return pm::acos(clampf(0.5f * (tr - 1.0f), -1.0f, 1.0f)) / kDeg;
 }
 
 // Scales each joint's change since `last` down to at most its group's
@@ -101,62 +84,6 @@ void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<flo
     }
     k += n;
   }
-}
-
-// Legs brought together again after separate_legs (by the joint speed
-// limit, or by a whole-body action's leg pose blended over them): a leg in
-// the air is turned out of the other leg's way once more, as long as each
-// hip then turns at most kSeparateAgainDeg past the limit (issue 23's
-// largest change is 60 deg a frame) and, with `travel`, each ankle keeps
-// within a frame's travel (plus kSeparationSlackM), and each third of the
-// clients' blend of a hip within a third of that. Otherwise the legs stay
-// as they were, but for both feet up: then the leg that turned too fast is
-// held and the other one turns out.
-// On the two full games: thighs / shins / feet too close 8/9/10 -> 4/4/3
-// and 2/5/10 -> 0/1/3 at 20 Hz (with a whole-body action's blend, below);
-// with 10 deg the legs' largest change at 60 Hz went to 61.2 deg
-// (anim/README.md).
-void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, std::span<const float> last,
-                         const AnkleTravel* travel, const bool planted[2], std::span<float> a) {
-  std::array<float, dof::kCount> held;
-  std::copy_n(a.begin(), dof::kCount, held.begin());
-  // One try with the legs in `fixed` held: the hip that would turn too
-  // fast (0 right, 1 left; the legs are then as they were), or -1.
-  auto attempt = [&](const bool fixed[2]) {
-    separate_legs(a, pelvis_h, fixed);
-    clamp_to_limits(skel, a);
-    for (int side = 0; side < 2; ++side) {
-      const auto k = static_cast<std::size_t>(side == 0 ? dof::kRHip : dof::kLHip);
-      constexpr float kMostDeg = kMaxLegStepDeg + kSeparateAgainDeg;
-      bool fast = rotation_between(kZxy, &last[k], &a[k]) > kMostDeg;
-      // Nor a third of the frame as the clients blend it (their angles
-      // linearly at 60 Hz): a blend of Euler angles turns unevenly, and
-      // one hip's last third turned 20.3 deg (60.9 deg per 50 ms) when
-      // the leg further across turned out.
-      float at[4][3];
-      for (int n = 0; n < 4; ++n)
-        for (std::size_t d = 0; d < 3; ++d)
-          at[n][d] = last[k + d] + (a[k + d] - last[k + d]) * static_cast<float>(n) / 3.0f;
-      for (int n = 0; n < 3 && !fast; ++n) fast = rotation_between(kZxy, at[n], at[n + 1]) > kMostDeg / 3.0f;
-      if (fast) {
-        std::copy(held.begin(), held.end(), a.begin());
-        return side;
-      }
-    }
-    return -1;
-  };
-  const int too_fast = attempt(planted);
-  // With both feet up, the leg that the speed limit holds may be the one
-  // further across: then the other one turns out instead (game 1 seq 8679,
-  // legs crossed in a flight phase, thighs 3.1 cm inside).
-  if (too_fast >= 0 && !planted[0] && !planted[1]) {
-    const bool hold[2] = {too_fast == 0, too_fast == 1};
-    if (attempt(hold) >= 0) return;
-  } else if (too_fast >= 0) {
-    return;
-  }
-  if (std::equal(held.begin(), held.end(), a.begin())) return;
-  if (travel != nullptr) limit_ankle_travel(skel, body, pelvis_h, *travel, held, a, kSeparationSlackM);
 }
 
 // Moves kicking foot `k` so that its box lies kContactGap off the ball:
