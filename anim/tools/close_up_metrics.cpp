@@ -275,8 +275,9 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             r.ankle_step_max_m = std::max(r.ankle_step_max_m, mv);
             if (mv > kAnklePopM || rel > kAnklePopRelM) {
               ++r.ankle_pops;
-              if (slides_over > 0 && m == 1)
-                std::fprintf(stderr, "pop seq %u slot %zu foot %d move %.2f rel %.2f root %.1f m/s\n", f.seq, p, s, mv, rel, root_v);
+              if (slides_over > 0)
+                std::fprintf(stderr, "pop seq %u+%d slot %zu foot %d move %.2f rel %.2f root %.1f m/s rate %d\n", f.seq, k, p, s,
+                             mv, rel, root_v, m);
             }
           }
           // Floating.
