@@ -17,6 +17,8 @@ int axis_index(char a) { return a == 'x' ? 0 : a == 'y' ? 1 : a == 'z' ? 2 : -1;
 
 constexpr float kDegToRad = 0.017453292519943295f;
 
+}  // namespace
+
 // sin and cos of one joint angle (degrees), remembered. One frame of one
 // player poses the same angles many times over (the legs' solver, the
 // hands' clearance, the grass check, the speed limit all run forward
@@ -24,7 +26,9 @@ constexpr float kDegToRad = 0.017453292519943295f;
 // small direct-mapped table per thread, keyed by the angle's bits: a hit
 // gives exactly what the computation would, so the frames do not change.
 // (Zeroed entries hold +0 degrees, whose sine and cosine are 0 and 1.)
-void sincos_deg(float deg, float& s, float& c) {
+namespace {
+
+inline void remembered_sincos(float deg, float& s, float& c) {
   struct Entry {
     std::uint32_t bits = 0;
     float s = 0, c = 1;
@@ -44,10 +48,16 @@ void sincos_deg(float deg, float& s, float& c) {
 
 }  // namespace
 
-glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
-  // r * R_axis(angle), column by column: an elementary rotation mixes two
-  // columns of r and keeps the third. The columns are named, not indexed,
-  // so they stay in registers (this is the hottest loop of the animation).
+void sincos_deg(float deg, float& s, float& c) { remembered_sincos(deg, s, c); }
+
+namespace {
+
+// r * R_axis(angle) for each dof in turn, column by column: an elementary
+// rotation mixes two columns of r and keeps the third. The columns are
+// named, not indexed, so they stay in registers (this is the hottest loop
+// of the animation). `sc(i, s, c)` gives dof i's sine and cosine.
+template <typename SinCos>
+glm::mat3 rotation_of(const std::string& dofs, SinCos sc) {
   glm::vec3 c0(1, 0, 0), c1(0, 1, 0), c2(0, 0, 1);
   auto mix = [](glm::vec3& p, glm::vec3& q, float s, float c) {
     const glm::vec3 cp = p, cq = q;
@@ -57,12 +67,39 @@ glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
   const char* axes = dofs.data();
   for (std::size_t i = 0, n = dofs.size(); i < n; ++i) {
     float s = 0, c = 1;
-    sincos_deg(deg[i], s, c);
+    sc(i, s, c);
     if (axes[i] == 'x') mix(c1, c2, s, c);
     else if (axes[i] == 'y') mix(c2, c0, s, c);
     else mix(c0, c1, s, c);
   }
   return glm::mat3(c0, c1, c2);
+}
+
+}  // namespace
+
+glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
+  glm::vec3 c0(1, 0, 0), c1(0, 1, 0), c2(0, 0, 1);
+  auto mix = [](glm::vec3& p, glm::vec3& q, float s, float c) {
+    const glm::vec3 cp = p, cq = q;
+    p = c * cp + s * cq;
+    q = c * cq - s * cp;
+  };
+  const char* axes = dofs.data();
+  for (std::size_t i = 0, n = dofs.size(); i < n; ++i) {
+    float s = 0, c = 1;
+    remembered_sincos(deg[i], s, c);
+    if (axes[i] == 'x') mix(c1, c2, s, c);
+    else if (axes[i] == 'y') mix(c2, c0, s, c);
+    else mix(c0, c1, s, c);
+  }
+  return glm::mat3(c0, c1, c2);
+}
+
+glm::mat3 joint_rotation(const std::string& dofs, const float* sin, const float* cos) {
+  return rotation_of(dofs, [sin, cos](std::size_t i, float& s, float& c) {
+    s = sin[i];
+    c = cos[i];
+  });
 }
 
 float rotation_between(const std::string& dofs, const float* a, const float* b) {
@@ -96,10 +133,14 @@ bool LocalToModelJob::Validate() const {
   if (skeleton == nullptr) return false;
   const auto& joints = skeleton->joints;
   if (models.size() < joints.size()) return false;
-  if (angles_deg.size() < static_cast<std::size_t>(skeleton->dof_count())) return false;
-  for (std::size_t i = 0; i < joints.size(); ++i)
+  // One pass (this runs before every pose): parents before children, and
+  // the dofs counted against the angles.
+  std::size_t dofs = 0;
+  for (std::size_t i = 0; i < joints.size(); ++i) {
     if (joints[i].parent >= static_cast<int>(i) || (i > 0 && joints[i].parent < 0)) return false;
-  return true;
+    dofs += joints[i].dofs.size();
+  }
+  return angles_deg.size() >= dofs;
 }
 
 bool LocalToModelJob::Run() const {
