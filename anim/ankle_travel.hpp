@@ -68,4 +68,28 @@ int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, const Ank
 int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, const AnkleTravel& last,
                        std::span<const float> last_angles, std::span<float> a, float slack = 1e-3f);
 
+// A frame's root as the clients blend it: field position (m), the pelvis
+// joint's height (m) and heading (field deg).
+struct DrawnRoot {
+  float x = 0, y = 0, height = 0, heading = 0;
+};
+
+// The ankles' travel as the clients draw it. They blend the root and every
+// angle linearly between two frames (proto/SPEC.md 4.7, step 1), so an
+// ankle follows a curve, and part of the frame can carry it faster than
+// the chord the bounds above hold: with every chord within them, 61 and 63
+// foot-frames of the two full games popped at 60 Hz (issue 23). Each leg
+// not in `skip` whose thirds of the drawn frame move its ankle faster than
+// kDrawnPopM (over the grass) or kDrawnPopRelM (relative to the pelvis) per
+// frame has its change since `last_angles` scaled down, by bisection, until
+// they keep within. `last`, `last_angles`, `last_ankle`: the previous
+// frame's root, angles and ankles (field x, y, height); `now`, `a`,
+// `now_ankle`: this frame's (`a` changed in place). Returns a bit per leg
+// held back (1 right, 2 left).
+inline constexpr float kDrawnPopM = 0.97f;
+inline constexpr float kDrawnPopRelM = 0.58f;
+int limit_drawn_travel(const SkeletonDef& skel, const DrawnRoot& last, std::span<const float> last_angles,
+                       const glm::vec3 last_ankle[2], const DrawnRoot& now, std::span<float> a,
+                       const glm::vec3 now_ankle[2], const bool skip[2]);
+
 }  // namespace mc::anim

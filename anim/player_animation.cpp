@@ -172,6 +172,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
                     in.action == Action::Turn || in.action == Action::Disconnected;
   // Rate-limited heading: zig-zags and pirouettes are softened further.
   float heading = in.heading;
+  const float last_heading = ctx.heading;
   if (!in.reset)  // half-way each frame (a 0.1 s time constant), then rate-limited
     heading = wrap_deg(ctx.heading + clampf(0.5f * delta_deg(in.heading, ctx.heading), -kMaxTurnPerFrameDeg,
                                             kMaxTurnPerFrameDeg));
@@ -509,6 +510,26 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
                           lo.planted, a);
   }
   rest_on_grass(8.0f);
+  // No ankle pops as the clients draw the frame either (the bounds above
+  // hold a frame's chord only): 61 / 63 of the two full games' foot-frames
+  // at 60 Hz -> 21 / 17. A planted foot is not moved, nor a kicking foot on
+  // its last frame before contact: held back there, it reached the ball
+  // 3.7 cm short (game 1 seq 11795; the joint speed limit then holds the
+  // rest of its way). Those frames are the pops left. A leg held back rests
+  // on the grass again.
+  if (!in.reset && ctx.ankles.valid && rested) {
+    const DrawnRoot from{ctx.ankles.pelvis.x, ctx.ankles.pelvis.y, ctx.ankles.pelvis.z, last_heading};
+    bool keep[2];
+    glm::vec3 now_ankle[2];
+    for (int i = 0; i < 2; ++i) {
+      keep[i] = lo.planted[i] || skip[i] || (contact && act->kick_foot == i) || (goal[i].set && goal[i].frames <= 1);
+      body.to_field(rested_ankle[i].x, rested_ankle[i].z, now_ankle[i].x, now_ankle[i].y);
+      now_ankle[i].z = rested_ankle[i].y;
+    }
+    if (limit_drawn_travel(limits_from, from, ctx.last_angles, ctx.ankles.ankle, DrawnRoot{px, py, pelvis_h, heading}, a,
+                           now_ankle, keep) != 0)
+      rest_on_grass(8.0f);
+  }
   for (int i = 0; i < 2; ++i)  // every touch-down counts for the mocap walk's cadence guard
     if (lo.planted[i] && !ctx.last_planted[i]) ctx.walk_since_land[i] = 0;
   ctx.last_planted[0] = lo.planted[0];

@@ -147,5 +147,104 @@ TEST(AnkleTravel, AKickingFootKeepsWithinAFramesReachOfItsContact) {
   EXPECT_EQ(limit_ankle_travel(human_skeleton(), body, last, skip, lift, goal, early.job), 0);
 }
 
+// The clients' drawing of a frame (proto/SPEC.md 4.7 step 1): the root and
+// every angle blended linearly. The fastest third of leg `i`'s ankle, over
+// the grass and about the pelvis, in m per frame.
+struct Drawn {
+  float world = 0, rel = 0;
+};
+Drawn fastest_third(const std::array<float, dof::kCount>& from, const DrawnRoot& last,
+                    const std::array<float, dof::kCount>& to, const DrawnRoot& now, int i) {
+  glm::vec3 ankle[4][2], pelvis[4];
+  for (int n = 0; n < 4; ++n) {
+    const float t = static_cast<float>(n) / 3.0f;
+    std::array<float, dof::kCount> q{};
+    for (std::size_t k = 0; k < q.size(); ++k) q[k] = from[k] + (to[k] - from[k]) * t;
+    const DrawnRoot r{last.x + (now.x - last.x) * t, last.y + (now.y - last.y) * t,
+                      last.height + (now.height - last.height) * t, last.heading + (now.heading - last.heading) * t};
+    ankle_positions(human_skeleton(), q, r.height, BodyFrame(r.x, r.y, r.heading), ankle[n]);
+    pelvis[n] = glm::vec3(r.x, r.y, r.height);
+  }
+  Drawn d;
+  for (int n = 0; n < 3; ++n) {
+    const glm::vec3 move = ankle[n + 1][i] - ankle[n][i];
+    d.world = std::max(d.world, 3.0f * glm::length(move));
+    d.rel = std::max(d.rel, 3.0f * glm::length(move - (pelvis[n + 1] - pelvis[n])));
+  }
+  return d;
+}
+
+// A right leg swinging forward from behind the hip while its knee folds
+// (hip -10 -> 30 deg, knee -10 -> -120): its ankle ends 0.45 m from where
+// it was, within a frame's chord, but blended linearly it moves along a
+// curve, and its middle third goes at 0.65 m a frame about the pelvis,
+// past the 0.6 (a pop at 60 Hz). The leg is held back until every
+// third keeps within kDrawnPopRelM, by no more than it must; the left leg,
+// which does not move, is left alone.
+struct Swing {
+  std::array<float, dof::kCount> from{}, to{};
+  DrawnRoot last{10.0f, 5.0f, 0.93f, 30.0f}, now{10.0f, 5.0f, 0.93f, 30.0f};
+  Swing() {
+    from[dof::kRHip] = -10.0f; from[dof::kRKnee] = -10.0f;
+    to[dof::kRHip] = 30.0f; to[dof::kRKnee] = -120.0f;
+    from[dof::kLKnee] = to[dof::kLKnee] = -20.0f;
+  }
+  int limit(const bool skip[2]) {
+    glm::vec3 a0[2], a1[2];
+    ankle_positions(human_skeleton(), from, last.height, BodyFrame(last.x, last.y, last.heading), a0);
+    ankle_positions(human_skeleton(), to, now.height, BodyFrame(now.x, now.y, now.heading), a1);
+    return limit_drawn_travel(human_skeleton(), last, from, a0, now, to, a1, skip);
+  }
+};
+
+TEST(DrawnTravel, ALegWhoseBlendCarriesItsAnkleTooFastIsHeldBack) {
+  Swing s;
+  glm::vec3 a0[2], a1[2];
+  ankle_positions(human_skeleton(), s.from, 0.93f, BodyFrame(10.0f, 5.0f, 30.0f), a0);
+  ankle_positions(human_skeleton(), s.to, 0.93f, BodyFrame(10.0f, 5.0f, 30.0f), a1);
+  ASSERT_LE(glm::length(a1[0] - a0[0]), kAnklePastPelvisM) << "the chord is within the frame's bounds";
+  ASSERT_GT(fastest_third(s.from, s.last, s.to, s.now, 0).rel, 0.6f) << "and the drawn frame pops";
+  const auto planned = s.to;
+  const bool skip[2] = {false, false};
+  EXPECT_EQ(s.limit(skip), 1);
+  const Drawn d = fastest_third(s.from, s.last, s.to, s.now, 0);
+  EXPECT_LE(d.rel, kDrawnPopRelM + 1e-3f);
+  EXPECT_GT(d.rel, kDrawnPopRelM - 0.03f) << "held back no more than it must";
+  EXPECT_LT(s.to[dof::kRKnee], -60.0f) << "still most of the way";
+  for (int k = dof::kLHip; k < dof::kCount; ++k) EXPECT_EQ(s.to[static_cast<std::size_t>(k)], planned[static_cast<std::size_t>(k)]);
+}
+
+// A leg the caller keeps (a planted foot, a kick's contact) is not moved,
+// nor a leg whose blend is slow.
+TEST(DrawnTravel, AKeptOrSlowLegIsLeftAlone) {
+  {
+    Swing s;
+    const auto planned = s.to;
+    const bool skip[2] = {true, false};
+    EXPECT_EQ(s.limit(skip), 0);
+    EXPECT_EQ(s.to, planned);
+  }
+  Swing s;
+  s.to[dof::kRHip] = 0.0f;
+  s.to[dof::kRKnee] = -30.0f;
+  const auto planned = s.to;
+  const bool skip[2] = {false, false};
+  EXPECT_EQ(s.limit(skip), 0);
+  EXPECT_EQ(s.to, planned);
+}
+
+// With the body running at 9 m/s (0.45 m a frame) and turning, the same
+// swing is held back until each third keeps within both bounds, over the
+// grass and about the pelvis.
+TEST(DrawnTravel, ARunningBodysSwingKeepsWithinBothBounds) {
+  Swing s;
+  s.now = DrawnRoot{10.0f + 0.45f * 0.866f, 5.0f + 0.45f * 0.5f, 0.95f, 38.0f};
+  const bool skip[2] = {false, false};
+  EXPECT_EQ(s.limit(skip) & 1, 1);
+  const Drawn d = fastest_third(s.from, s.last, s.to, s.now, 0);
+  EXPECT_LE(d.rel, kDrawnPopRelM + 1e-3f);
+  EXPECT_LE(d.world, kDrawnPopM + 1e-3f);
+}
+
 }  // namespace
 }  // namespace mc::anim
