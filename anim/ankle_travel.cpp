@@ -76,6 +76,28 @@ glm::vec3 towards_goal(const AnkleGoal& goal, const glm::vec3& pelvis_step, cons
   return goal.at + capped(q - goal.at, n * kAnkleWorldStepM);
 }
 
+// Scales the change of the leg whose dofs (hip 3, knee, ankle 2) start at
+// `first`, since `last_angles`, down to the largest share (found by
+// bisection, within 1/64; 0 if none) for which `ok()` holds of `a`.
+template <typename Ok>
+void scale_leg_back(std::span<const float> last_angles, std::span<float> a, int first, Ok ok) {
+  std::array<float, 6> to{};
+  for (int d = 0; d < 6; ++d) to[static_cast<std::size_t>(d)] = a[static_cast<std::size_t>(first + d)];
+  auto set = [&](float s) {
+    for (int d = 0; d < 6; ++d) {
+      const auto k = static_cast<std::size_t>(first + d);
+      a[k] = last_angles[k] + (to[static_cast<std::size_t>(d)] - last_angles[k]) * s;
+    }
+  };
+  float lo = 0, hi = 1;
+  for (int it = 0; it < kBisections; ++it) {
+    const float mid = 0.5f * (lo + hi);
+    set(mid);
+    (ok() ? lo : hi) = mid;
+  }
+  set(lo);
+}
+
 }  // namespace
 
 int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, const AnkleTravel& last, const bool skip[2],
@@ -176,25 +198,11 @@ int limit_ankle_travel(const SkeletonDef& skel, const BodyFrame& body, float pel
   int held = 0;
   for (int i = 0; i < 2; ++i) {
     if (within(last, i, pelvis, now[i], slack)) continue;
-    // The leg's dofs (hip 3, knee, ankle 2) from last frame's towards this one's.
-    const int first = i == 0 ? dof::kRHip : dof::kLHip;
-    std::array<float, 6> to{};
-    for (int d = 0; d < 6; ++d) to[static_cast<std::size_t>(d)] = a[static_cast<std::size_t>(first + d)];
-    auto set = [&](float s) {
-      for (int d = 0; d < 6; ++d) {
-        const auto k = static_cast<std::size_t>(first + d);
-        a[k] = last_angles[k] + (to[static_cast<std::size_t>(d)] - last_angles[k]) * s;
-      }
-    };
-    float lo = 0, hi = 1;
-    for (int it = 0; it < kBisections; ++it) {
-      const float mid = 0.5f * (lo + hi);
-      set(mid);
+    scale_leg_back(last_angles, a, i == 0 ? dof::kRHip : dof::kLHip, [&] {
       glm::vec3 p[2];
       ankle_positions(skel, a, pelvis_h, body, p);
-      (within(last, i, pelvis, p[i], slack) ? lo : hi) = mid;
-    }
-    set(lo);
+      return within(last, i, pelvis, p[i], slack);
+    });
     held |= 1 << i;
   }
   return held;
@@ -371,27 +379,12 @@ int limit_drawn_travel(const SkeletonDef& skel, const DrawnRoot& last, std::span
     const float path = root_turn * (kPelvisToHipM + hip_lever) + hip_turn * hip_lever + twist_turn * twist_lever +
                        knee_turn * dims::kShin;
     if (slow(path) || !too_fast(i, now_ankle[i])) continue;
-    std::array<float, 6> to{};
-    for (int d = 0; d < 6; ++d) to[static_cast<std::size_t>(d)] = a[static_cast<std::size_t>(first + d)];
-    auto set = [&](float s) {
-      for (int d = 0; d < 6; ++d) {
-        const auto k = static_cast<std::size_t>(first + d);
-        a[k] = last_angles[k] + (to[static_cast<std::size_t>(d)] - last_angles[k]) * s;
-      }
-    };
-    // The frame's own ankle, for the leg as `set` leaves it.
-    auto end = [&] {
+    // Judged with the frame's own ankle for the leg as it is scaled.
+    scale_leg_back(last_angles, a, first, [&] {
       glm::vec3 p[2];
       ankle_positions(skel, a, now.height, BodyFrame(now.x, now.y, now.heading), p);
-      return p[i];
-    };
-    float lo = 0, hi = 1;
-    for (int it = 0; it < kBisections; ++it) {
-      const float mid = 0.5f * (lo + hi);
-      set(mid);
-      (too_fast(i, end()) ? hi : lo) = mid;
-    }
-    set(lo);
+      return !too_fast(i, p[i]);
+    });
     held |= 1 << i;
   }
   return held;

@@ -78,21 +78,7 @@ glm::mat3 rotation_of(const std::string& dofs, SinCos sc) {
 }  // namespace
 
 glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
-  glm::vec3 c0(1, 0, 0), c1(0, 1, 0), c2(0, 0, 1);
-  auto mix = [](glm::vec3& p, glm::vec3& q, float s, float c) {
-    const glm::vec3 cp = p, cq = q;
-    p = c * cp + s * cq;
-    q = c * cq - s * cp;
-  };
-  const char* axes = dofs.data();
-  for (std::size_t i = 0, n = dofs.size(); i < n; ++i) {
-    float s = 0, c = 1;
-    remembered_sincos(deg[i], s, c);
-    if (axes[i] == 'x') mix(c1, c2, s, c);
-    else if (axes[i] == 'y') mix(c2, c0, s, c);
-    else mix(c0, c1, s, c);
-  }
-  return glm::mat3(c0, c1, c2);
+  return rotation_of(dofs, [deg](std::size_t i, float& s, float& c) { remembered_sincos(deg[i], s, c); });
 }
 
 glm::mat3 joint_rotation(const std::string& dofs, const float* sin, const float* cos) {
