@@ -85,7 +85,10 @@ struct DrawnRoot {
 // they keep within. `last`, `last_angles`, `last_ankle`: the previous
 // frame's root, angles and ankles (field x, y, height); `now`, `a`,
 // `now_ankle`: this frame's (`a` changed in place). Returns a bit per leg
-// held back (1 right, 2 left).
+// held back (1 right, 2 left). Not checked, to keep it cheap: a leg whose
+// path (each joint's turn times its lever) cannot pass the bounds, and a
+// leg whose ankle ends within half a bound of where it was (a measured
+// shortcut, not a proof; ankle_travel.cpp).
 inline constexpr float kDrawnPopM = 0.97f;
 inline constexpr float kDrawnPopRelM = 0.58f;
 int limit_drawn_travel(const SkeletonDef& skel, const DrawnRoot& last, std::span<const float> last_angles,
