@@ -107,6 +107,10 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
   }
   double bd_sum[4] = {0, 0, 0, 0};
   long bd_n[4] = {0, 0, 0, 0};
+  // The same pairs by the foot's speed: below 1, 1-3, 3-6 and 6+ m/s (a
+  // foot skimming the grass in its swing is in the last).
+  double bd_speed_sum[4][4] = {};
+  long bd_speed_n[4][4] = {};
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int subs = i + 1 < frames.size() ? m : 1;
     for (int k = 0; k < subs; ++k) {
@@ -230,6 +234,9 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
               const int c = (g20[lo][p][static_cast<std::size_t>(s)] ? 2 : 0) + (g20[hi][p][static_cast<std::size_t>(s)] ? 1 : 0);
               bd_sum[c] += v;
               ++bd_n[c];
+              const int q = v < 1 ? 0 : v < 3 ? 1 : v < 6 ? 2 : 3;
+              bd_speed_sum[c][q] += v;
+              ++bd_speed_n[c][q];
             }
             if (slides_over > 0 && v > slides_over)
               std::fprintf(stderr, "slide %.2f m/s seq %u+%d slot %zu foot %d root %.1f m/s low %.3f -> %.3f rate %d\n", v, f.seq, k, p,
@@ -410,6 +417,11 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
     for (int c = 0; c < 4; ++c)
       std::fprintf(stderr, "drawn grounded pairs, root >= 3 m/s, 20 Hz feet %s: %ld pairs, mean %.2f m/s, %.0f %% of the sliding\n",
                    names[c], bd_n[c], bd_n[c] ? bd_sum[c] / static_cast<double>(bd_n[c]) : 0.0, total > 0 ? 100 * bd_sum[c] / total : 0.0);
+    const char* speeds[4] = {"< 1", "1-3", "3-6", "6+"};
+    for (int c = 0; c < 4; ++c)
+      for (int q = 0; q < 4; ++q)
+        std::fprintf(stderr, "  %s, foot at %s m/s: %ld pairs, %.0f %% of the sliding\n", names[c], speeds[q], bd_speed_n[c][q],
+                     total > 0 ? 100 * bd_speed_sum[c][q] / total : 0.0);
   }
   return r;
 }

@@ -16,7 +16,8 @@
 // drawn as the clients draw it (the angle blend, then the feet and the legs
 // kept apart, anim/leg_blend.hpp); --leg-blend none leaves that step out, to
 // measure what it gives. MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the
-// drawn frames' sliding by the 20 Hz feet around them (stderr).
+// drawn frames' sliding by the 20 Hz feet around them and by the foot's
+// own speed (stderr).
 // --contact-sheet: the close-up contact sheet of the first log (a sprint, a
 // kick, a turn, every frame of a second, contact_sheet.hpp), default
 // test-output/anim/contact-sheet.png.
