@@ -15,6 +15,7 @@
 #include "anim/local_to_model_job.hpp"
 #include "anim/mocap_walk_layer.hpp"
 #include "anim/portable_math.hpp"
+#include "anim/swing_clearance.hpp"
 
 namespace mc::anim {
 namespace {
@@ -370,6 +371,17 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   legs.feet[0] = feet[0];
   legs.feet[1] = feet[1];
   legs.angles = a;
+  // A foot in the air keeps off the grass as it travels (swing_clearance.hpp):
+  // not a kick's foot, nor under a whole-body action.
+  if (own_feet && !in.reset && ctx.ankles.valid && (act == nullptr || !act->whole_body || w <= 0))
+    for (int i = 0; i < 2; ++i) {
+      if (lo.planted[i] || (act != nullptr && act->feet && w > 0 && act->kick_foot == i)) continue;
+      FootTarget& t = legs.feet[i];
+      float fx, fy;
+      body.to_field(t.ankle_ms[0], t.ankle_ms[2], fx, fy);
+      if (may_skim(t.ankle_ms[1], pm::hypot(fx - ctx.ankles.ankle[i].x, fy - ctx.ankles.ankle[i].y)))
+        t.ankle_ms[1] += swing_lift(t.ankle_ms[1], t.pitch_deg);
+    }
   legs.Run();
   // An ankle that cannot bend as far as a flat planted sole needs: the heel rises.
   bool again = false;

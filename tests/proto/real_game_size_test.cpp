@@ -10,12 +10,14 @@
 // benchmark still reports the 3 MB target as not met. This test guards the
 // measured size instead (kRecordingBound), so that a change that makes the
 // file bigger still fails here; lower the bound to 3 MB when the codec or
-// the animation wins the 6 % back. Raised twice since, from 3.200 to 3.205
+// the animation wins the 6 % back. Raised three times since, from 3.200 to 3.205
 // MB: the arms lifted clear of the thighs (issue 23, 955 player-frames with
 // a hand inside a thigh to 0) cost 0.2 % (3.195 -> 3.202 MB); then to 3.210
 // MB: 6 cm of clearance instead of 3, so that no hand passes through a
 // thigh in the clients' 60 Hz blend either (10 and 4 drawn frames to 0),
-// 0.15 % (3.202 -> 3.207 MB).
+// 0.15 % (3.202 -> 3.207 MB). Then to 3.215 MB: feet in the air kept 5 cm
+// off the grass (anim/swing_clearance.hpp, the clients' sliding at 60 Hz)
+// cost 0.09 % (3,208,492 -> 3,211,314 B; game 2 3,186,532 -> 3,189,378).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -70,7 +72,7 @@ TEST_P(RealGameSize, StreamAndRecordingMeetTheirTargets) {
   }
   struct stat st {};
   ASSERT_EQ(::stat(path.c_str(), &st), 0);
-  constexpr off_t kRecordingBound = 3'210'000;  // the target is 3'000'000: see the top of this file
+  constexpr off_t kRecordingBound = 3'215'000;  // the target is 3'000'000: see the top of this file
   EXPECT_LE(st.st_size, kRecordingBound) << "the recording of a full game grew past its measured size";
   if (st.st_size > 3'000'000)
     std::printf("[ target ] recording %lld B: over the 3 MB target (not met since issue 23)\n",
