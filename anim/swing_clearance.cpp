@@ -13,15 +13,24 @@
 namespace mc::anim {
 namespace {
 
-// The foot's box (human_skeleton.cpp): its centre and half sides, in the
-// foot joint's space (X forward, Y up).
-const glm::vec3 kFootCentre((dims::kFootFront - dims::kFootBack) / 2, -dims::kAnkleHeight / 2, 0);
-const glm::vec3 kFootHalf(0.5f * (dims::kFootFront + dims::kFootBack), 0.5f * dims::kAnkleHeight, 0.05f);
+// The foot's box, as human_skeleton() defines it: its centre and half
+// sides, in the foot joint's space (X forward, Y up).
+struct FootBox {
+  glm::vec3 centre, half;
+};
+const FootBox& foot_box() {
+  static const FootBox box = [] {
+    const Segment& sg = human_skeleton().joints[kRFoot].segment;
+    return FootBox{glm::vec3(sg.center[0], sg.center[1], sg.center[2]),
+                   0.5f * glm::vec3(sg.size[0], sg.size[1], sg.size[2])};
+  }();
+  return box;
+}
 
 }  // namespace
 
 bool may_skim(float ankle_height, float travel_m) {
-  static const float reach = glm::length(kFootCentre) + glm::length(kFootHalf);
+  static const float reach = glm::length(foot_box().centre) + glm::length(foot_box().half);
   return travel_m > kSkimStepM && ankle_height - reach < kSwingClearM;
 }
 
@@ -31,8 +40,8 @@ float swing_lift(float ankle_height, float pitch_deg) {
   // half side times its axis's lean.
   float s, c;
   pm::sincos(pitch_deg * kDeg, s, c);
-  const float sole = ankle_height + kFootCentre.x * s + kFootCentre.y * c - kFootHalf.x * std::fabs(s) -
-                     kFootHalf.y * std::fabs(c);
+  const FootBox& box = foot_box();
+  const float sole = ankle_height + box.centre.x * s + box.centre.y * c - box.half.x * std::fabs(s) - box.half.y * std::fabs(c);
   return std::max(0.0f, kSwingClearM - sole);
 }
 
