@@ -6,6 +6,7 @@
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/portable_math.hpp"
+#include "anim/segment_distance.hpp"
 
 namespace mc::anim {
 namespace {
@@ -13,13 +14,27 @@ namespace {
 constexpr float kSide[2] = {1.0f, -1.0f};  // +1 right (+Z), -1 left
 // The sole (bottom of the foot's box): centre ahead of the ankle, half length.
 constexpr float kSoleCentre = 0.5f * (dims::kFootFront - dims::kFootBack);  // 0.06
+constexpr float kSoleHalf = 0.5f * (dims::kFootFront + dims::kFootBack);    // 0.13
 constexpr float kSettleSwingS = 0.32f;  // s, a settling step's swing
 constexpr float kSwingPastHipM = 0.55f;  // m a frame, a swinging ankle relative to the root (11 m/s)
 constexpr float kApproachSlope = 0.4f;  // m up per m still to travel, coming down
 constexpr float kPassLength = 0.32f;    // m along the body within which two feet are side by side
+// m between two soles' centre lines when one lands: the boxes are 0.10 m
+// wide (the quality tool's feet too close: nearer than 0.05 m).
+constexpr float kSolesApartM = 0.11f;
 constexpr float kMaxHeelRise = -35.0f;  // deg, the most a planted foot rolls up on its toes
 
 float wrap01(float p) { return p - std::floor(p); }
+
+// How near (m) the centre lines of two soles come, each sole given by its
+// centre and its yaw (deg) in one plane: feet at different yaws (a turn)
+// can cross at a toe or a heel with their centres far enough apart.
+float soles_apart(float ax, float ay, float ayaw, float bx, float by, float byaw) {
+  const glm::vec3 da(pm::cos(ayaw * kDeg) * kSoleHalf, 0.0f, pm::sin(ayaw * kDeg) * kSoleHalf);
+  const glm::vec3 db(pm::cos(byaw * kDeg) * kSoleHalf, 0.0f, pm::sin(byaw * kDeg) * kSoleHalf);
+  const glm::vec3 a(ax, 0.0f, ay), b(bx, 0.0f, by);
+  return segment_distance(a - da, a + da, b - db, b + db);
+}
 
 // Where the root is `t` seconds from now along the path ahead (then
 // straight on at the last known velocity, for at most 0.6 s more).
@@ -377,6 +392,17 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
       float ox, oz;
       land.to_body(o.planted ? o.x : o.bx, o.planted ? o.y : o.by, ox, oz);
       if (kSide[i] * (bz - oz) < prm.min_gap) bz = oz + kSide[i] * prm.min_gap;
+      // Nor do the soles cross at a toe or a heel when the other foot is
+      // turned (it landed earlier in a turn: game 1 seq 2477). Measured only
+      // when the other sole's ends, turned by its yaw, may come within
+      // kSolesApartM sideways; on most frames they cannot.
+      const float oyaw = (o.planted ? o.yaw : o.byaw) - in.heading;
+      const float ends = kSoleHalf * std::fabs(pm::sin(oyaw * kDeg));
+      for (int k = 0; k < 2 && kSide[i] * (bz - oz) - ends < kSolesApartM; ++k) {
+        const float apart = soles_apart(bx, bz, 0.0f, ox, oz, oyaw);
+        if (apart >= kSolesApartM) break;
+        bz += kSide[i] * (kSolesApartM - apart + 0.005f);
+      }
       float tx, ty;
       land.to_field(bx, bz, tx, ty);
       // Re-planned every frame: early in the swing the foot has barely left

@@ -7,6 +7,8 @@
 
 #include "anim/body_frame.hpp"
 #include "anim/gait_timing.hpp"
+#include "anim/human_skeleton.hpp"
+#include "anim/segment_distance.hpp"
 
 namespace mc::anim {
 namespace {
@@ -17,7 +19,17 @@ struct Trip {
   std::vector<int> touchdown_frames[2];
   int frames_in_flight = 0;         // both feet in the air
   int frames = 0;
+  double min_soles_apart = 1e9;     // m between the soles' centre lines, both feet planted
 };
+
+// The centre line of a planted foot's sole: from its heel to its toe,
+// through the sole's centre at the foot's yaw.
+void sole_line(const FootState& f, glm::vec3& heel, glm::vec3& toe) {
+  const float half = 0.5f * (dims::kFootFront + dims::kFootBack);
+  const glm::vec3 c(f.x, 0.0f, f.y), d(std::cos(f.yaw * kDeg) * half, 0.0f, std::sin(f.yaw * kDeg) * half);
+  heel = c - d;
+  toe = c + d;
+}
 
 // Drives one player along +x (or turning on the spot): `speed_of(frame)`
 // m/s, 20 frames per second, with the look-ahead's path of the next frames.
@@ -48,6 +60,12 @@ Trip drive(FootstepState& s, int frames, SpeedFn speed_of, float heading_rate = 
     heading = wrap_deg(heading + heading_rate * dt);
     ++r.frames;
     if (!s.feet[0].planted && !s.feet[1].planted) ++r.frames_in_flight;
+    if (s.feet[0].planted && s.feet[1].planted) {
+      glm::vec3 h0, t0, h1, t1;
+      sole_line(s.feet[0], h0, t0);
+      sole_line(s.feet[1], h1, t1);
+      r.min_soles_apart = std::min(r.min_soles_apart, static_cast<double>(segment_distance(h0, t0, h1, t1)));
+    }
     for (int i = 0; i < 2; ++i) {
       if (!first && s.feet[i].planted && before[i].planted)
         r.max_planted_drift = std::max(r.max_planted_drift,
@@ -216,6 +234,22 @@ TEST(Footsteps, TurningOnTheSpotPivotsAndSteps) {
   EXPECT_EQ(r.frames_in_flight, 0);
   drive(s, 30, [](int) { return 0.0f; });
   for (const FootState& f : s.feet) EXPECT_LT(std::fabs(delta_deg(f.yaw, s.heading)), 36.0f);
+}
+
+// A foot that lands beside one planted earlier in a quick turn keeps its
+// sole off the other's: with the feet at different yaws, soles whose
+// centres are far enough apart sideways can still cross at a toe or a
+// heel (game 1 seq 2477, a side-step turning 12 deg a frame; the feet's
+// boxes are 0.10 m wide).
+TEST(Footsteps, SolesOfFeetTurnedApartDoNotCross) {
+  for (float v : {0.4f, 0.8f, 1.5f})
+    for (float rate : {-240.0f, -120.0f, 120.0f, 240.0f}) {
+      FootstepState s;
+      drive(s, 10, [](int) { return 0.0f; });
+      const Trip r = drive(s, 60, [v](int) { return v; }, rate);
+      EXPECT_GT(r.touchdowns, 3) << v << " m/s, " << rate << " deg/s";
+      EXPECT_GE(r.min_soles_apart, 0.10) << v << " m/s, " << rate << " deg/s";
+    }
 }
 
 TEST(Footsteps, PlantedAnkleRollsOverItsEdges) {
