@@ -173,8 +173,13 @@ void tackle(const ActionMotion& m, float tau, ActionSample& s) {
   a[trail_hip] = 45; a[trail_hip + 1] = right ? 25.0f : -25.0f; a[trail_knee] = -150;
 }
 
+// A catch is the upper body's: the arms take the ball in and the trunk
+// bends over it while the legs stay locomotion's, on their footsteps, with
+// the pelvis lowered into a crouch. A goalkeeper often catches on the run
+// or sets off with the ball at once; given as a whole-body crouch, the
+// legs glided with the body for the catch's 0.5 s (game 1 seq 1486-1491,
+// a goalkeeper at 6-10 m/s with both feet on the grass).
 void catch_ball(const ActionMotion& m, float tau, ActionSample& s) {
-  s.whole_body = true;
   s.weight = envelope(m, tau, 0.12f, 0.25f);
   s.pelvis_height = 0.95f + (0.84f - 0.95f) * s.weight;
   auto& a = s.angles;
@@ -182,9 +187,6 @@ void catch_ball(const ActionMotion& m, float tau, ActionSample& s) {
   a[dof::kTorso + 1] = -10;
   a[dof::kRShoulder + 0] = 95; a[dof::kRShoulder + 1] = 8; a[dof::kRElbow] = 35;
   a[dof::kLShoulder + 0] = 95; a[dof::kLShoulder + 1] = -8; a[dof::kLElbow] = 35;
-  for (int hip : {dof::kRHip, dof::kLHip}) a[hip] = 38;
-  a[dof::kRKnee] = a[dof::kLKnee] = -55;
-  a[dof::kRAnkle] = a[dof::kLAnkle] = 17;
 }
 
 void dive(const ActionMotion& m, float tau, ActionSample& s) {

@@ -64,8 +64,9 @@ struct ActionSample {
   bool support_lands = false;  // Kick: the support foot plants on its spot this frame
   float ball_x = 0, ball_y = 0, ball_h = 0.085f, ball_r = 0.085f;
   float pelvis_height = 0.9f;
-  // Angles blended over locomotion's with `weight`: all dofs (tackle, catch,
-  // dive) or only the pelvis, torso and arms (kick).
+  // Angles blended over locomotion's with `weight`: all dofs (tackle, dive)
+  // or only the pelvis, torso and arms (kick, catch: the legs keep their
+  // footsteps).
   bool whole_body = false;
   std::array<float, dof::kCount> angles{};
 };

@@ -359,7 +359,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // The pelvis as low as the planted legs need: first a heel rises (a foot
   // behind the hip pushes off from its toes), then the pelvis sinks.
   const glm::mat3 pelvis_rot = joint_rotation(kYzx, &a[dof::kPelvis]);
-  const bool own_feet = in.animate_locomotion && (act == nullptr || w <= 0 || act->feet);
+  const bool own_feet = in.animate_locomotion && (act == nullptr || w <= 0 || act->feet || !act->whole_body);
   float limit = pelvis_h;
   for (int i = 0; i < 2 && own_feet; ++i) {
     FootState& f = ctx.loco.feet[i];

@@ -189,7 +189,10 @@ struct Bounds {
 // 0.94 m/s; at 60 Hz 13/6/70 -> 14/6/69 and 15/1/59 -> 15/2/56, ankle pops
 // 21/17 -> 21/18. Bounds: 20 Hz 1/0/3 -> 0/0/0, sprint band 1.3 -> 1.0,
 // 60 Hz feet 70 -> 69.
-constexpr Bounds kAt20Hz{0.20, 0.5, 1.0, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 0, 0, 0, 0, 50, 0.02, 4.5,
+// A catch is the upper body's over the legs' footsteps (anim/
+// action_motion.cpp, 2026-11-28): the 9+ m/s band at 20 Hz 0.94/0.79 ->
+// 0.79/0.63 (a goalkeeper who caught and ran on); bound 1.0 -> 0.85.
+constexpr Bounds kAt20Hz{0.20, 0.5, 0.85, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 0, 0, 0, 0, 50, 0.02, 4.5,
                          -0.02, 0.31};
 constexpr Bounds kAt60Hz{0.20, 1.5, 4.1, 0.80, 0.02, 0.03, 0, 60, 45, 45, 45, 21, 15, 6, 69, 0, 150, 0.02, 4.5,
                          -0.02, 0.31};
