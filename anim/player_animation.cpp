@@ -565,17 +565,18 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   rest_on_grass(8.0f);
   // No ankle pops as the clients draw the frame either (the bounds above
   // hold a frame's chord only): 61 / 63 of the two full games' foot-frames
-  // at 60 Hz -> 21 / 17. A planted foot is not moved, nor a kicking foot on
-  // its last frame before contact: held back there, it reached the ball
-  // 3.7 cm short (game 1 seq 11795; the joint speed limit then holds the
-  // rest of its way). Those frames are the pops left. A leg held back rests
-  // on the grass again.
+  // at 60 Hz -> 21 / 17. A planted foot is not moved. A kicking foot on its
+  // last frame before contact is held back too since the contact reaches
+  // the ball with the hip where the joint speed limit holds the knee
+  // (kick_reach.hpp): before that, held back there, it reached the ball
+  // 3.7 cm short (game 1 seq 11795), and those frames were the 21 / 18
+  // pops left (now 1 / 1). A leg held back rests on the grass again.
   if (!in.reset && ctx.ankles.valid && rested) {
     const DrawnRoot from{ctx.ankles.pelvis.x, ctx.ankles.pelvis.y, ctx.ankles.pelvis.z, last_heading};
     bool keep[2];
     glm::vec3 now_ankle[2];
     for (int i = 0; i < 2; ++i) {
-      keep[i] = lo.planted[i] || skip[i] || (contact && act->kick_foot == i) || (goal[i].set && goal[i].frames <= 1);
+      keep[i] = lo.planted[i] || skip[i] || (contact && act->kick_foot == i);
       body.to_field(rested_ankle[i].x, rested_ankle[i].z, now_ankle[i].x, now_ankle[i].y);
       now_ankle[i].z = rested_ankle[i].y;
     }

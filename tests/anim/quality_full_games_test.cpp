@@ -194,7 +194,12 @@ struct Bounds {
 // 0.79/0.63 (a goalkeeper who caught and ran on); bound 1.0 -> 0.85.
 constexpr Bounds kAt20Hz{0.20, 0.5, 0.85, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 0, 0, 0, 0, 50, 0.02, 4.5,
                          -0.02, 0.31};
-constexpr Bounds kAt60Hz{0.20, 1.5, 4.1, 0.80, 0.02, 0.03, 0, 60, 45, 45, 45, 21, 15, 6, 69, 0, 150, 0.02, 4.5,
+// A kicking foot on its last frame before contact is held back by the
+// clients' blend as any other foot is (limit_drawn_travel; the contact
+// reaches the ball with the hip, kick_reach.hpp, 2026-11-28): ankle pops
+// at 60 Hz 21/18 -> 1/1, kicks unchanged, shins too close at 60 Hz on
+// game 1 6 -> 7. Bounds: pops 21 -> 1, shins 6 -> 7.
+constexpr Bounds kAt60Hz{0.20, 1.5, 4.1, 0.80, 0.02, 0.03, 0, 60, 45, 45, 45, 1, 15, 7, 69, 0, 150, 0.02, 4.5,
                          -0.02, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
