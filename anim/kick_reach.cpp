@@ -12,6 +12,7 @@
 #include "anim/human_skeleton.hpp"
 #include "anim/limb_clearance.hpp"
 #include "anim/local_to_model_job.hpp"
+#include "anim/player_animation.hpp"
 #include "anim/portable_math.hpp"
 
 namespace mc::anim {
@@ -28,6 +29,65 @@ glm::mat3 axis_turn(const glm::vec3& n, float angle) {
 }
 
 }  // namespace
+
+void touch_ball(const SkeletonDef& skel, const BodyFrame& body, float& pelvis_h, const ActionSample& act, int k,
+                LegPoseJob& legs, std::span<float> a) {
+  const int foot = k == 0 ? kRFoot : kLFoot;
+  const Segment& seg = skel.joints[static_cast<std::size_t>(foot)].segment;
+  glm::vec3 ball(0.0f, act.ball_h, 0.0f);
+  body.to_body(act.ball_x, act.ball_y, ball.x, ball.z);
+  bool can_sink = true;
+  std::array<glm::mat4, kHumanJointCount> m;
+  // The other leg keeps its pose unless the pelvis sinks.
+  const int other_dof = k == 0 ? dof::kLHip : dof::kRHip;
+  float other[6];
+  for (int d = 0; d < 6; ++d) other[d] = a[static_cast<std::size_t>(other_dof + d)];
+  const float start_pelvis = legs.pelvis_height;
+  auto solve = [&] {
+    legs.Run();
+    if (legs.pelvis_height == start_pelvis)
+      for (int d = 0; d < 6; ++d) a[static_cast<std::size_t>(other_dof + d)] = other[d];
+    clamp_to_limits(skel, a);
+  };
+  for (int it = 0; it < 6; ++it) {
+    LocalToModelJob fk{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0, legs.pelvis_height, 0), m};
+    fk.joint_mask = kLegJoints;
+    if (!fk.Run()) return;
+    const glm::mat4& fm = m[static_cast<std::size_t>(foot)];
+    const glm::mat3 rot(fm);
+    const glm::vec3 local = glm::transpose(rot) * (ball - glm::vec3(fm[3]));
+    glm::vec3 n_local;
+    const float gap = box_distance(seg, local, &n_local) - act.ball_r;
+    if (std::fabs(gap - kContactGapM) < 0.001f) break;
+    const glm::vec3 move = rot * n_local * (gap - kContactGapM);  // towards the ball when too far
+    for (int c = 0; c < 3; ++c) legs.feet[k].ankle_ms[c] += move[c];
+    legs.feet[k].ankle_ms[1] = std::max(legs.feet[k].ankle_ms[1], min_ankle_height(legs.feet[k].pitch_deg));
+    // Out of the leg's reach: the pelvis sinks (a lunge), a little at a
+    // time, as long as no foot goes into the grass.
+    const float before = legs.pelvis_height;
+    if (!legs.reached[k] && it > 0 && can_sink) legs.pelvis_height = std::max(legs.pelvis_height - 0.04f, 0.6f);
+    solve();
+    if (legs.pelvis_height != before) {
+      LocalToModelJob fk2{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0, legs.pelvis_height, 0), m};
+      fk2.joint_mask = kLegJoints;
+      if (fk2.Run() && lowest_point_ms(skel, m, kFeetJoints) < -0.005f) {
+        legs.pelvis_height = before;
+        can_sink = false;
+        solve();
+      }
+    }
+  }
+  pelvis_h = legs.pelvis_height;
+  // Whatever the leg could not reach, the foot stays out of the grass.
+  LocalToModelJob fk{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0, pelvis_h, 0), m};
+  fk.joint_mask = kLegJoints;
+  for (int it = 0; it < 3 && fk.Run(); ++it) {
+    const float low = level_foot(skel, m, a, foot, k == 0 ? dof::kRAnkle : dof::kLAnkle);
+    if (low >= -0.002f) break;
+    legs.feet[k].ankle_ms[1] -= low;
+    solve();
+  }
+}
 
 float reach_ball_with_hip(const SkeletonDef& skel, std::span<const float> last, float pelvis_h, const glm::vec3& ball_ms,
                           float ball_r, int k, float gap_m, float cap_deg, std::span<float> a) {

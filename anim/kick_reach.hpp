@@ -1,5 +1,5 @@
-// A kick's contact that the joint speed limit held short (issue 23: the
-// kicking foot's box touches the ball). On its contact frame the kicking
+// A kick's contact: the kicking foot's box touches the ball (issue 23).
+// touch_ball solves the leg onto it; on the contact frame the kicking
 // leg may turn at most kMaxKickLegStepDeg a joint; a knee that was bent
 // deep in the frame before (a backswing, a step in a turn) then stops
 // short of the straight leg the IK asked for, and the foot with it. What
@@ -12,9 +12,24 @@
 
 #include <glm/vec3.hpp>
 
+#include "anim/action_motion.hpp"
+#include "anim/body_frame.hpp"
+#include "anim/leg_pose_job.hpp"
 #include "proto/skeleton.hpp"
 
 namespace mc::anim {
+
+// The foot's box this far off the ball's surface at contact (m): the
+// margin of the stream's quantization.
+inline constexpr float kContactGapM = 0.004f;
+
+// Moves kicking foot `k` ([0] right, [1] left) of `act`'s contact so that
+// its box lies kContactGapM off the ball: corrections of its ankle target
+// in `legs` along the contact normal, each solved again by LegPoseJob, the
+// pelvis sinking (a lunge) where the leg cannot reach. `body` places the
+// ball; `a` holds the pose; `pelvis_h` gets the pelvis's new height.
+void touch_ball(const SkeletonDef& skel, const BodyFrame& body, float& pelvis_h, const ActionSample& act, int k,
+                LegPoseJob& legs, std::span<float> a);
 
 // Turns kicking leg `k` ([0] right, [1] left) about its hip so that its
 // foot's box comes `gap_m` off the ball (centre `ball_ms` in body space,
