@@ -89,8 +89,13 @@ struct DrawnRoot {
 // path (each joint's turn times its lever) cannot pass the bounds, and a
 // leg whose ankle ends within half a bound of where it was (a measured
 // shortcut, not a proof; ankle_travel.cpp).
+// kDrawnPopRelM leaves room under the 0.6 m for what the clients
+// add: their swing of a leg about its hip (proto/SPEC.md 4.7 step 2, at
+// most 1 deg, 1.5 cm at the ankle in a third of a frame: 0.045 m per
+// frame). With 0.58 m the last two 60 Hz pops (game 1 seq 2378, game 2
+// seq 8592) were such feet leaving the grass at 9 m/s, 0.61-0.62 m.
 inline constexpr float kDrawnPopM = 0.97f;
-inline constexpr float kDrawnPopRelM = 0.58f;
+inline constexpr float kDrawnPopRelM = 0.55f;
 int limit_drawn_travel(const SkeletonDef& skel, const DrawnRoot& last, std::span<const float> last_angles,
                        const glm::vec3 last_ankle[2], const DrawnRoot& now, std::span<float> a,
                        const glm::vec3 now_ankle[2], const bool skip[2]);

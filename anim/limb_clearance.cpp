@@ -18,6 +18,9 @@ const std::string kYzx = "yzx", kZxy = "zxy", kZ = "z", kZx = "zx";
 // How far past the legs' joint speed limit a hip may turn to keep the legs
 // apart after that limit (deg; separate_legs_again).
 constexpr float kSeparateAgainDeg = 8.0f;
+// Halvings of a turn-out too fast in full: to 1/64 of it (at most 0.4 deg
+// of a turn-out of at most 25 deg).
+constexpr int kTurnOutBisections = 6;
 
 }  // namespace
 
@@ -176,11 +179,8 @@ void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float p
                          const AnkleTravel* travel, const bool planted[2], std::span<float> a) {
   std::array<float, dof::kCount> held;
   std::copy_n(a.begin(), dof::kCount, held.begin());
-  // One try with the legs in `fixed` held: the hip that would turn too
-  // fast (0 right, 1 left; the legs are then as they were), or -1.
-  auto attempt = [&](const bool fixed[2]) {
-    separate_legs(a, pelvis_h, fixed);
-    clamp_to_limits(skel, a);
+  // The hip that turns too fast from `last` to `a` (0 right, 1 left), or -1.
+  auto hip_too_fast = [&] {
     for (int side = 0; side < 2; ++side) {
       const auto k = static_cast<std::size_t>(side == 0 ? dof::kRHip : dof::kLHip);
       constexpr float kMostDeg = kMaxLegStepDeg + kSeparateAgainDeg;
@@ -194,12 +194,33 @@ void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float p
         for (std::size_t d = 0; d < 3; ++d)
           at[n][d] = last[k + d] + (a[k + d] - last[k + d]) * static_cast<float>(n) / 3.0f;
       for (int n = 0; n < 3 && !fast; ++n) fast = rotation_between(kZxy, at[n], at[n + 1]) > kMostDeg / 3.0f;
-      if (fast) {
-        std::copy(held.begin(), held.end(), a.begin());
-        return side;
-      }
+      if (fast) return side;
     }
     return -1;
+  };
+  // One try with the legs in `fixed` held. A turn-out too fast in full is
+  // taken as far as it keeps within the limits (bisection): refused whole,
+  // it left a crossover step's shins 3.8 cm inside each other (game 2 seq
+  // 11560, a kick's approach). Returns the hip that would turn too fast
+  // even a little (the legs are then as they were), or -1.
+  auto attempt = [&](const bool fixed[2]) {
+    separate_legs(a, pelvis_h, fixed);
+    clamp_to_limits(skel, a);
+    const int side = hip_too_fast();
+    if (side < 0) return -1;
+    std::array<float, dof::kCount> full;
+    std::copy_n(a.begin(), dof::kCount, full.begin());
+    auto set = [&](float s) {
+      for (std::size_t d = 0; d < full.size(); ++d) a[d] = held[d] + (full[d] - held[d]) * s;
+    };
+    float lo = 0, hi = 1;
+    for (int it = 0; it < kTurnOutBisections; ++it) {
+      const float mid = 0.5f * (lo + hi);
+      set(mid);
+      (hip_too_fast() < 0 ? lo : hi) = mid;
+    }
+    set(lo);
+    return lo > 0 ? -1 : side;
   };
   const int too_fast = attempt(planted);
   // With both feet up, the leg that the speed limit holds may be the one

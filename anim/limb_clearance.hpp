@@ -45,9 +45,10 @@ bool separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]);
 // hip then turns at most kSeparateAgainDeg past the limit (issue 23's
 // largest change is 60 deg a frame) and, with `travel`, each ankle keeps
 // within a frame's travel (plus kSeparationSlackM), and each third of the
-// clients' blend of a hip within a third of that. Otherwise the legs stay
-// as they were, but for both feet up: then the leg that turned too fast is
-// held and the other one turns out.
+// clients' blend of a hip within a third of that. Otherwise the leg turns
+// out as far as those limits let it; if not at all, the legs stay as they
+// were, but for both feet up: then the leg that turned too fast is held and
+// the other one turns out.
 // On the two full games: thighs / shins / feet too close 8/9/10 -> 4/4/3
 // and 2/5/10 -> 0/1/3 at 20 Hz (with a whole-body action's blend, below);
 // with 10 deg the legs' largest change at 60 Hz went to 61.2 deg

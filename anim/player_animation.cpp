@@ -37,6 +37,10 @@ constexpr float kContactFrameS = 0.02f;
 // A kick's support foot held up to this far (m, and this high) from its spot
 // as it plants is planted where it is.
 constexpr float kSupportReanchorM = 0.4f;
+// Turn-outs and checks of the clients' drawn travel after the check held a
+// leg back (below). On the two full games 3, 4 and 8 all left them apart;
+// each pair costs a separation and a check, on a few hundred frames a game.
+constexpr int kDrawnRetries = 4;
 
 // Highest pelvis at which the ankle of `t` (body space) stays within reach of
 // its hip, for a pelvis rotated by `pelvis` (pelvis joint on the body's Y axis).
@@ -508,9 +512,25 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       body.to_field(rested_ankle[i].x, rested_ankle[i].z, now_ankle[i].x, now_ankle[i].y);
       now_ankle[i].z = rested_ankle[i].y;
     }
-    if (limit_drawn_travel(limits_from, from, ctx.last_angles, ctx.ankles.ankle, DrawnRoot{px, py, pelvis_h, heading}, a,
-                           now_ankle, keep) != 0)
+    auto hold_drawn = [&] {
+      return limit_drawn_travel(limits_from, from, ctx.last_angles, ctx.ankles.ankle,
+                                DrawnRoot{px, py, pelvis_h, heading}, a, now_ankle, keep) != 0;
+    };
+    if (hold_drawn()) {
+      // A leg held back may come back into the other one (game 2 seq 9484,
+      // feet 3 mm too close): it is turned out again and checked again,
+      // each turn-out smaller, and if a check still holds it after
+      // kDrawnRetries, turned out a last time: legs kept apart come before
+      // the last millimetres of a third of a frame's travel.
+      bool held = true;
+      for (int k = 0; k < kDrawnRetries && held && own_feet && !contact; ++k) {
+        separate_legs_again(limits_from, body, pelvis_h, ctx.last_angles, &ctx.ankles, lo.planted, a);
+        held = hold_drawn();
+      }
+      if (held && own_feet && !contact)
+        separate_legs_again(limits_from, body, pelvis_h, ctx.last_angles, &ctx.ankles, lo.planted, a);
       rest_on_grass(8.0f);
+    }
   }
   for (int i = 0; i < 2; ++i)  // every touch-down counts for the mocap walk's cadence guard
     if (lo.planted[i] && !ctx.last_planted[i]) ctx.walk_since_land[i] = 0;
