@@ -51,10 +51,12 @@ float segment_lowest_ms(const Segment& segment, const glm::mat4& model);
 // index `ankle_dof`) towards a level sole by as little as lifts the sole out
 // of the grass, within the joint's limits and [lo_deg, hi_deg] (a joint
 // speed limit, say); rewrites that angle and the foot's model transform.
-// Returns the foot's lowest point afterwards (m; < 0 when even the most
-// level sole allowed is under, e.g. an ankle below its own height).
+// With `clear_m` the sole is lifted to that height rather than to the grass
+// (a foot in the air skimming it). Returns the foot's lowest point
+// afterwards (m; < clear_m when even the most level sole allowed is lower,
+// e.g. an ankle below its own height).
 float level_foot(const SkeletonDef& skeleton, std::span<glm::mat4> models, std::span<float> angles, int foot,
-                 int ankle_dof, float lo_deg = -INFINITY, float hi_deg = INFINITY);
+                 int ankle_dof, float lo_deg = -INFINITY, float hi_deg = INFINITY, float clear_m = 0.0f);
 
 // Lowest ankle height (m) at which a sole pitched by `pitch_deg` (+ toes up)
 // keeps both its heel and its toe on or above the grass: a pitched foot

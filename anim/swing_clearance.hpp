@@ -18,6 +18,12 @@ namespace mc::anim {
 // down but brought ankle pops and floating bodies (anim/README.md).
 inline constexpr float kSkimStepM = 0.05f;
 inline constexpr float kSwingClearM = 0.05f;
+// After the joint speed limit such a foot's ankle may turn this far (deg)
+// past its pitch towards level to keep the sole kSwingClearM up
+// (player_animation.cpp). With 8 deg, as far as a sole pitched into the
+// grass turns, game 2's 9+ m/s band at 20 Hz was 0.50 m/s; with 20 deg
+// 0.39 (50 deg gave the same).
+inline constexpr float kSkimLevelDeg = 20.0f;
 
 // Whether a foot in the air whose ankle target is `ankle_height` m up and
 // `travel_m` from where its ankle was on the last frame (over the grass)

@@ -60,6 +60,28 @@ TEST(GroundContact, LevelFootTurnsTheAnkleAsLittleAsPossible) {
   EXPECT_LT(bounded, 0.0f);
 }
 
+// A foot in the air skimming the grass toes down (0.5 cm up, as the joint
+// speed limit can leave a swing) turns towards level until its sole is at
+// the clearance asked for, by as little as that takes.
+TEST(GroundContact, LevelFootLiftsASkimmingSoleToItsClearance) {
+  std::array<float, kMaxDof> a{};
+  a[dof::kRAnkle] = -30;  // toes down
+  a[dof::kRHip] = 10;     // the leg a little forward: the foot in the air
+  a[dof::kRKnee] = -60;
+  auto m = pose_models(a, dims::kStandPelvis);
+  const float start = segment_lowest_ms(human_skeleton().joints[kRFoot].segment, m[kRFoot]);
+  // Lowered so that the toes are 0.5 cm up.
+  m = pose_models(a, dims::kStandPelvis - start + 0.005f);
+  ASSERT_NEAR(segment_lowest_ms(human_skeleton().joints[kRFoot].segment, m[kRFoot]), 0.005f, 1e-4f);
+  EXPECT_NEAR(level_foot(human_skeleton(), m, a, kRFoot, dof::kRAnkle), 0.005f, 1e-4f)
+      << "above the grass: no clearance asked, nothing to do";
+  EXPECT_FLOAT_EQ(a[dof::kRAnkle], -30.0f);
+  const float after = level_foot(human_skeleton(), m, a, kRFoot, dof::kRAnkle, -INFINITY, INFINITY, 0.05f);
+  EXPECT_GE(after, 0.05f - 1e-4f);
+  EXPECT_LT(after, 0.05f + 0.002f) << "no further than the clearance";
+  EXPECT_GT(a[dof::kRAnkle], -30.0f);  // turned toes up
+}
+
 // Tackles and dives are given as joint angles, a catch lowers the pelvis
 // over the legs' own footsteps; whatever their weight, the animated body
 // rests on the grass and is not buried in it.
