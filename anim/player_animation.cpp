@@ -537,8 +537,8 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     };
     if (hold_drawn()) {
       // A leg held back may come back into the other one (game 2 seq 9484,
-      // feet 3 mm too close): it is turned out again and checked again,
-      // each turn-out smaller, and if a check still holds it after
+      // feet 3 mm too close): it is turned out again and checked again
+      // until a check lets it be, and if one still holds it after
       // kDrawnRetries, turned out a last time: legs kept apart come before
       // the last millimetres of a third of a frame's travel.
       bool held = true;
