@@ -1,0 +1,60 @@
+// The close-up camera's line of sight (web/src/model/sightline.js): it
+// keeps its bearing while no one stands between it and its subject, and
+// cuts to the clear bearing nearest to it when someone does.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const WEB = process.env.MATCHCAST_WEB_DIR ?? path.resolve(import.meta.dirname, '../../web');
+const { CLOSEUP_BEARINGS_DEG, blocks, clearBearing, closeupSpot } =
+  await import(pathToFileURL(path.join(WEB, 'src/model/sightline.js')).href);
+
+const subject = { x: 10, y: -5 };
+// A player half-way along the line from a bearing's camera spot to the subject.
+const inTheWay = (bearing) => {
+  const cam = closeupSpot(subject, CLOSEUP_BEARINGS_DEG[bearing]);
+  return { x: (cam.x + subject.x) / 2, y: (cam.y + subject.y) / 2 };
+};
+
+test('the camera stands 4.7 m from its subject, on the main stand side at bearing 0', () => {
+  const cam = closeupSpot(subject, 0);
+  assert.ok(Math.abs(Math.hypot(cam.x - subject.x, cam.y - subject.y) - Math.hypot(1.2, 4.6)) < 1e-9);
+  assert.ok(cam.y > subject.y + 4);
+  for (const deg of CLOSEUP_BEARINGS_DEG) {
+    const c = closeupSpot(subject, deg);
+    assert.ok(c.y > subject.y, `bearing ${deg}: still on the main stand side`);
+  }
+});
+
+test('only a player between the camera and the subject blocks it', () => {
+  const cam = closeupSpot(subject, 0);
+  assert.equal(blocks(cam, subject, inTheWay(0)), true);
+  assert.equal(blocks(cam, subject, { x: subject.x, y: subject.y - 1.5 }), false, 'behind the subject');
+  assert.equal(blocks(cam, subject, { x: cam.x, y: cam.y + 1 }), false, 'behind the camera');
+  const side = inTheWay(0);
+  assert.equal(blocks(cam, subject, { x: side.x + 1.0, y: side.y }), false, 'a metre to the side');
+  assert.equal(blocks(subject, subject, inTheWay(0)), false, 'no line of sight at all');
+  assert.equal(blocks(cam, subject, { x: NaN, y: 0 }), false, 'no position');
+});
+
+test('a clear bearing is kept; a blocked one gives way to the nearest clear one', () => {
+  assert.equal(clearBearing(subject, []), 0);
+  assert.equal(clearBearing(subject, [{ x: subject.x, y: subject.y - 2 }]), 0, 'someone behind him');
+  const chosen = clearBearing(subject, [inTheWay(0)], 0);
+  assert.notEqual(chosen, 0);
+  assert.equal(Math.abs(CLOSEUP_BEARINGS_DEG[chosen]), 35, 'the nearest bearing that is clear');
+  const cam = closeupSpot(subject, CLOSEUP_BEARINGS_DEG[chosen]);
+  assert.equal(blocks(cam, subject, inTheWay(0)), false);
+  // Not back to straight-on while the present bearing is clear.
+  assert.equal(clearBearing(subject, [], 2), 2);
+  // Both +-35 blocked as well: the next clear one out.
+  const three = clearBearing(subject, [inTheWay(0), inTheWay(1), inTheWay(2)], 0);
+  assert.equal(Math.abs(CLOSEUP_BEARINGS_DEG[three]), 70);
+  // Everyone in the way: no cut helps.
+  const all = CLOSEUP_BEARINGS_DEG.map((_, i) => inTheWay(i));
+  assert.equal(clearBearing(subject, all, 1), 1);
+  // A bad bearing index is read as straight-on.
+  assert.equal(clearBearing(subject, [], 99), 0);
+  assert.equal(clearBearing(subject, [], -1), 0);
+});

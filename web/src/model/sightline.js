@@ -1,0 +1,51 @@
+// The close-up camera keeps its subject in sight. It stands beside him on
+// the main stand's side at chest height; another player between the two
+// filled the picture with his back (seen in a close-up of #10 behind #11).
+// The camera then cuts to the nearest of a few bearings about the subject
+// from which no one stands in the way, as a broadcast cuts to another
+// camera. Pure functions of positions (field x, y in metres): no three.js.
+
+// Bearings (deg) tried about the subject, from the straight-on view first.
+export const CLOSEUP_BEARINGS_DEG = [0, -35, 35, -70, 70];
+// The camera's offset from its subject at bearing 0 (field m): a little
+// behind him towards -x, 4.6 m towards the main stand (+y).
+const OFFSET = { x: -1.2, y: 4.6 };
+// A body in the way: its centre this near the line of sight (m; a torso's
+// half width and an arm).
+export const BODY_RADIUS_M = 0.45;
+
+// The camera's field position for a subject at (x, y) and a bearing.
+export function closeupSpot(subject, bearingDeg) {
+  const b = (bearingDeg * Math.PI) / 180, c = Math.cos(b), s = Math.sin(b);
+  return { x: subject.x + OFFSET.x * c - OFFSET.y * s, y: subject.y + OFFSET.x * s + OFFSET.y * c };
+}
+
+// Whether `other` stands between the camera and the subject.
+export function blocks(cam, subject, other, radius = BODY_RADIUS_M) {
+  const vx = subject.x - cam.x, vy = subject.y - cam.y;
+  const len2 = vx * vx + vy * vy;
+  if (!(len2 > 1e-6)) return false;
+  const t = ((other.x - cam.x) * vx + (other.y - cam.y) * vy) / len2;
+  if (!(t > 0 && t < 1)) return false;  // behind the camera or beyond the subject
+  const px = cam.x + vx * t - other.x, py = cam.y + vy * t - other.y;
+  return px * px + py * py < radius * radius;
+}
+
+function blockedAt(subject, others, index) {
+  const cam = closeupSpot(subject, CLOSEUP_BEARINGS_DEG[index]);
+  return others.some((o) => blocks(cam, subject, o));
+}
+
+// The bearing index to film from: `current` while no one blocks it, else
+// the clear one nearest to it (by angle), else `current` (everyone in the
+// way: no cut helps).
+export function clearBearing(subject, others, current = 0) {
+  const cur = Number.isInteger(current) && current >= 0 && current < CLOSEUP_BEARINGS_DEG.length ? current : 0;
+  if (!blockedAt(subject, others, cur)) return cur;
+  let best = cur, bestTurn = Infinity;
+  CLOSEUP_BEARINGS_DEG.forEach((deg, i) => {
+    const turn = Math.abs(deg - CLOSEUP_BEARINGS_DEG[cur]);
+    if (i !== cur && turn < bestTurn && !blockedAt(subject, others, i)) { best = i; bestTurn = turn; }
+  });
+  return best;
+}
