@@ -37,6 +37,7 @@ export class Cameras {
     this.snap = true;
     this.closeupBearing = 0;   // index into CLOSEUP_BEARINGS_DEG
     this.closeupBlocked = 0;   // s its line of sight has been blocked
+    this.closeupAt = undefined;  // the stream position it was last drawn at
     this.orbit = new OrbitControls(camera, dom);
     this.orbit.enabled = false;
     this.orbit.enableDamping = true;
@@ -84,7 +85,7 @@ export class Cameras {
     }
   }
 
-  // view: { ball: {x,y,z}, players: Players, selected: key|null }
+  // view: { ball: {x,y,z}, players: Players, selected: key|null, at: stream position }
   // Returns the player key the camera needs hidden (first person), or null.
   update(dt, view) {
     const cam = this.camera;
@@ -184,8 +185,11 @@ export class Cameras {
           const others = [];
           for (const r of view.players.rigs?.values() ?? [])
             if (r !== rig && r.pose && r.root.visible) others.push({ x: r.pose.x, y: r.pose.y });
+          // Counted while the game moves: a paused picture is not cut away from.
+          const moving = view.at === undefined || view.at !== this.closeupAt;
+          this.closeupAt = view.at;
           const clear = clearBearing(pose, others, this.closeupBearing);
-          this.closeupBlocked = clear === this.closeupBearing ? 0 : this.closeupBlocked + dt;
+          this.closeupBlocked = clear === this.closeupBearing ? 0 : this.closeupBlocked + (moving ? dt : 0);
           if (this.closeupBlocked > CLOSEUP_PATIENCE_S) {
             this.closeupBearing = clear;
             this.closeupBlocked = 0;

@@ -397,7 +397,8 @@ function frameLoop(now) {
     hud.player(rig?.pose ? { side: rig.side, unum: rig.unum, goalie: (rig.pose.state & STATE.GOALIE) !== 0,
       stamina: staminaOf(rig.side, rig.unum), staminaMax: match?.params?.stamina_max } : null);
   }
-  const hide = cameras.update(dt, { ball: view?.ball ?? { x: 0, y: 0, z: 0 }, players, selected });
+  const hide = cameras.update(dt, { ball: view?.ball ?? { x: 0, y: 0, z: 0 }, players, selected,
+    at: timeshift.active ? timeshift.pos : buffer.playhead });
   if (players && players.hiddenKey !== hide) players.hiddenKey = hide;
   const t0 = performance.now();
   stereo.render();
