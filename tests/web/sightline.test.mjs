@@ -7,7 +7,7 @@ import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 const WEB = process.env.MATCHCAST_WEB_DIR ?? path.resolve(import.meta.dirname, '../../web');
-const { CLOSEUP_BEARINGS_DEG, blocks, clearBearing, closeupSpot } =
+const { CLOSEUP_BEARINGS_DEG, CLOSEUP_PATIENCE_S, CloseupAim, blocks, clearBearing, closeupSpot } =
   await import(pathToFileURL(path.join(WEB, 'src/model/sightline.js')).href);
 
 const subject = { x: 10, y: -5 };
@@ -57,4 +57,24 @@ test('a clear bearing is kept; a blocked one gives way to the nearest clear one'
   // A bad bearing index is read as straight-on.
   assert.equal(clearBearing(subject, [], 99), 0);
   assert.equal(clearBearing(subject, [], -1), 0);
+});
+
+test('the cut comes after the line of sight stays blocked for a while, and never while paused', () => {
+  const blocker = [inTheWay(0)];
+  const aim = new CloseupAim();
+  const straight = closeupSpot(subject, 0);
+  // Paused on one frame: however long, no cut.
+  for (let i = 0; i < 100; i++) assert.deepEqual(aim.update(0.05, 500, subject, blocker), straight);
+  // A moment in the way while the game moves: let pass.
+  aim.update(0.05, 501, subject, blocker);
+  assert.deepEqual(aim.update(0.05, 502, subject, []), straight);
+  // Longer: the cut.
+  let at = 502, spot = straight;
+  for (let t = 0; t <= CLOSEUP_PATIENCE_S + 0.1; t += 0.05) spot = aim.update(0.05, ++at, subject, blocker);
+  assert.notDeepEqual(spot, straight);
+  assert.equal(blocks(spot, subject, blocker[0]), false, 'cut to a clear bearing');
+  // Without stream positions (a caller that has none) time alone counts.
+  const plain = new CloseupAim();
+  for (let t = 0; t <= CLOSEUP_PATIENCE_S + 0.1; t += 0.05) spot = plain.update(0.05, undefined, subject, blocker);
+  assert.notDeepEqual(spot, straight);
 });

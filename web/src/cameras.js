@@ -3,7 +3,7 @@
 // inside a mode are smooth. Orbit and free hand the camera to the user.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { CLOSEUP_BEARINGS_DEG, clearBearing, closeupSpot } from './model/sightline.js';
+import { CloseupAim } from './model/sightline.js';
 
 export const CAMERA_MODES = [
   { id: 'director', key: '0', label: 'Director' },
@@ -18,9 +18,6 @@ export const CAMERA_MODES = [
 ];
 
 const DEG = Math.PI / 180;
-// A player who crosses the close-up's line of sight for less than this (s)
-// is let pass rather than cut away from.
-const CLOSEUP_PATIENCE_S = 0.3;
 
 export class Cameras {
   constructor(camera, dom, field) {
@@ -35,9 +32,7 @@ export class Cameras {
     this.lookGoal = new THREE.Vector3();
     this.fovGoal = 40;
     this.snap = true;
-    this.closeupBearing = 0;   // index into CLOSEUP_BEARINGS_DEG
-    this.closeupBlocked = 0;   // s its line of sight has been blocked
-    this.closeupAt = undefined;  // the stream position it was last drawn at
+    this.closeupAim = new CloseupAim();   // the close-up's bearing, clear of other players
     this.orbit = new OrbitControls(camera, dom);
     this.orbit.enabled = false;
     this.orbit.enableDamping = true;
@@ -182,19 +177,8 @@ export class Cameras {
         if (pose) {
           // Someone in the way for a moment is let pass; for longer, a cut
           // to a bearing from which no one is (model/sightline.js).
-          const others = [];
-          for (const r of view.players.rigs?.values() ?? [])
-            if (r !== rig && r.pose && r.root.visible) others.push({ x: r.pose.x, y: r.pose.y });
-          // Counted while the game moves: a paused picture is not cut away from.
-          const moving = view.at === undefined || view.at !== this.closeupAt;
-          this.closeupAt = view.at;
-          const clear = clearBearing(pose, others, this.closeupBearing);
-          this.closeupBlocked = clear === this.closeupBearing ? 0 : this.closeupBlocked + (moving ? dt : 0);
-          if (this.closeupBlocked > CLOSEUP_PATIENCE_S) {
-            this.closeupBearing = clear;
-            this.closeupBlocked = 0;
-          }
-          const at = closeupSpot(pose, CLOSEUP_BEARINGS_DEG[this.closeupBearing]);
+          const others = view.players.positions?.(rig?.key) ?? [];
+          const at = this.closeupAim.update(dt, view.at, pose, others);
           this.goal.set(at.x, 1.35, at.y);
           this.lookGoal.set(pose.x, 0.8, pose.y);
           this.fovGoal = aspect < 1 ? 55 : 38;

@@ -49,3 +49,32 @@ export function clearBearing(subject, others, current = 0) {
   });
   return best;
 }
+
+// A player who crosses the line of sight for less than this (s of game
+// time) is let pass rather than cut away from.
+export const CLOSEUP_PATIENCE_S = 0.3;
+
+// The close-up's bearing over time: a cut once the line of sight has been
+// blocked for CLOSEUP_PATIENCE_S while the game moves. `at` is the stream
+// position drawn: while it stays the same (paused, a viewer studying a
+// frame, the page's contact sheet stepping frame by frame) nothing counts.
+export class CloseupAim {
+  constructor() {
+    this.bearing = 0;        // index into CLOSEUP_BEARINGS_DEG
+    this.blocked = 0;        // s the line of sight has been blocked
+    this.at = undefined;     // the stream position last drawn
+  }
+
+  // Returns the camera's field position for `subject` among `others`.
+  update(dt, at, subject, others) {
+    const moving = at === undefined || at !== this.at;
+    this.at = at;
+    const clear = clearBearing(subject, others, this.bearing);
+    this.blocked = clear === this.bearing ? 0 : this.blocked + (moving && dt > 0 ? dt : 0);
+    if (this.blocked > CLOSEUP_PATIENCE_S) {
+      this.bearing = clear;
+      this.blocked = 0;
+    }
+    return closeupSpot(subject, CLOSEUP_BEARINGS_DEG[this.bearing]);
+  }
+}

@@ -257,5 +257,13 @@ export class Players {
   }
 
   get(key) { return this.rigs.get(key) ?? null; }
+
+  // Field positions ({x, y}) of the players on the pitch but `except` (a key).
+  positions(except = null) {
+    const out = [];
+    for (const rig of this.rigs.values())
+      if (rig.key !== except && rig.pose && rig.root.visible) out.push({ x: rig.pose.x, y: rig.pose.y });
+    return out;
+  }
   keys() { return [...this.rigs.keys()]; }
 }
