@@ -34,6 +34,7 @@ Animator::Animator(const SkeletonDef& skeleton, const GameParams& params, AnimCo
   // Past cycles needed: heading window, and the raw decision of the previous
   // cycle (which looks one further back).
   ring_.resize(static_cast<std::size_t>(config_.lookahead_cycles + config_.heading_half_window + 4));
+  raw_memo_.resize(ring_.size() * kMaxPlayers);
 }
 
 Animator::~Animator() = default;
@@ -48,17 +49,24 @@ Action Animator::last_action(int slot) const {
   return (*players_)[static_cast<std::size_t>(slot)].action;
 }
 
+// Each cycle's decision is asked for up to six times (the smoothing window,
+// the planning, the hold); it is remembered with what it was made from (the
+// states before and after it, when the ring had them).
 Action Animator::raw_action(std::uint64_t pos, int slot) const {
   const std::uint64_t oldest = pushed_ > ring_.size() ? pushed_ - ring_.size() : 0;
   const auto i = static_cast<std::size_t>(slot);
+  const bool has_prev = pos > oldest, has_next = pos + 1 < pushed_;
+  RawDecision& memo = raw_memo_[(pos % ring_.size()) * kMaxPlayers + i];
+  if (memo.pos == pos && memo.has_prev == has_prev && memo.has_next == has_next) return memo.action;
   const WorldState& cur = state_at(pos);
   ClassifyInput in;
   in.cur = &cur.players[i];
-  in.prev = pos > oldest ? &state_at(pos - 1).players[i] : nullptr;
-  in.next = pos + 1 < pushed_ ? &state_at(pos + 1).players[i] : nullptr;
+  in.prev = has_prev ? &state_at(pos - 1).players[i] : nullptr;
+  in.next = has_next ? &state_at(pos + 1).players[i] : nullptr;
   in.ball = &cur.ball;
   in.type = &params_.type(cur.players[i].type);
-  return classify_raw(in);
+  memo = RawDecision{pos, has_prev, has_next, classify_raw(in)};
+  return memo.action;
 }
 
 Action Animator::action_at(std::uint64_t pos, int slot) const {

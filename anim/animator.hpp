@@ -103,6 +103,13 @@ class Animator {
   } k_;
   AnimConfig config_;
   std::vector<WorldState> ring_;  // the last ring_.size() states, by stream position
+  // raw_action's last answer per ring slot and player, and what it was made from.
+  struct RawDecision {
+    std::uint64_t pos = ~std::uint64_t{0};
+    bool has_prev = false, has_next = false;
+    Action action = Action::Stand;
+  };
+  mutable std::vector<RawDecision> raw_memo_;
   std::uint64_t pushed_ = 0;      // states received
   std::uint64_t emitted_ = 0;     // cycles whose frames have left
   std::unique_ptr<std::array<PlayerAnim, kMaxPlayers>> players_;
