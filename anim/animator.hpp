@@ -38,6 +38,7 @@
 #include "anim/classifier.hpp"
 #include "proto/game_params.hpp"
 #include "proto/pose_frame.hpp"
+#include "proto/quantizer.hpp"
 #include "proto/skeleton.hpp"
 #include "proto/world_state.hpp"
 
@@ -102,6 +103,7 @@ class Animator {
     double step_ms = 100, ball_size = 0.085, tackle_cycles = 10, stamina_max = 8000;
   } k_;
   AnimConfig config_;
+  proto::Quantizer grid_;         // the stream's: frames leave on it (grid_rounding.hpp)
   std::vector<WorldState> ring_;  // the last ring_.size() states, by stream position
   // raw_action's last answer per ring slot and player, and what it was made from.
   struct RawDecision {

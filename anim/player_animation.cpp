@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "anim/body_frame.hpp"
+#include "anim/grid_rounding.hpp"
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/kick_reach.hpp"
@@ -448,9 +449,11 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   glm::vec3 rested_ankle[2];
   bool rested = false;
   const bool contact = act != nullptr && act->contact && act->feet && act->foot_weight[act->kick_foot] > 0;
+  // The joints as rest_on_grass last posed them (body space): the last pose
+  // of the legs, which round_legs_to_grid reads.
+  std::array<glm::mat4, kHumanJointCount> m;
   auto rest_on_grass = [&](float leeway_deg) {
     const bool whole = act != nullptr && act->whole_body && w > 0;
-    std::array<glm::mat4, kHumanJointCount> m;
     LocalToModelJob fk{&limits_from, std::span<const float>(a.data(), a.size()), glm::vec3(0, pelvis_h, 0), m};
     if (!whole) fk.joint_mask = kLegJoints;
     if (fk.Run()) {
@@ -603,6 +606,10 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   out.y = py;
   out.z = pelvis_h;
   out.heading = heading;
+  // On the stream's grid, rounded so as not to move the ankles (the frames
+  // the animation goes on from, ctx's, stay unrounded).
+  if (in.grid != nullptr && rested)
+    round_legs_to_grid(*in.grid, limits_from, m.data(), out, contact ? act->kick_foot : -1);
 }
 
 }  // namespace mc::anim

@@ -30,6 +30,10 @@
 #include "proto/pose_frame.hpp"
 #include "proto/skeleton.hpp"
 
+namespace mc::proto {
+class Quantizer;
+}
+
 namespace mc::anim {
 
 // Per-player context carried across frames (owned by the Animator).
@@ -99,6 +103,9 @@ struct PlayerFrameInput {
   float dt = 0.05f;
   const ActionSample* layer = nullptr;  // an action layered over locomotion at this frame, or null
   const MotionSource* source = nullptr;  // mocap mode: slow walking from its walk(), or null
+  // The stream's grid: the pose leaves on it, rounded so that its ankles stay
+  // put (grid_rounding.hpp); null leaves it unrounded.
+  const proto::Quantizer* grid = nullptr;
   // The root at the following frames (field m), as far as the look-ahead
   // knows them: where the feet will have to be.
   float ahead_x[kPathAhead] = {}, ahead_y[kPathAhead] = {};

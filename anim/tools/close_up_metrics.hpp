@@ -73,9 +73,6 @@ inline constexpr double kLegStepDeg = 60, kArmStepDeg = 45;
 // The trunk and the head (neck and head joints) turn no faster than the arms
 // swing: 900 deg/s.
 inline constexpr double kTrunkStepDeg = 45, kHeadStepDeg = 45;
-// The stream carries positions to 1 cm (0.5 cm per axis): the step-in,
-// measured from three decoded roots, gets that much leeway over its target.
-inline constexpr double kStepInQuantM = 0.01;
 inline constexpr long kMaxFloatingPlayerFrames = 50;  // at 20 Hz; scaled by draws_per_frame
 inline constexpr double kAnkleLimitShare = 0.02;
 inline constexpr double kCadenceP99 = 4.5;

@@ -229,7 +229,7 @@ QualityReport measure(const SkeletonDef& skel, const std::vector<WorldState>& st
 bool targets_hold(const QualityReport& r) {
   return r.root_error_m.max() <= 0.01 && r.slide_m.mean() <= 0.02 && r.contact_m.mean() <= 0.05 &&
          r.cadence.max() <= 4.5 && r.limit_violations == 0 && r.max_jump_deg <= kMaxJumpTarget &&
-         r.lowest_m >= -kGroundTolerance && r.step_in_m.max() <= kMaxStepInTarget + 1e-3;
+         r.lowest_m >= -kGroundTolerance && r.step_in_m.max() <= kMaxStepInTarget + kStepInQuantM;
 }
 
 std::string format_report(const QualityReport& r) {
@@ -247,7 +247,7 @@ std::string format_report(const QualityReport& r) {
       "  joint-frames over 15 deg: %ld of %ld (%.4f%%); largest outside legs in a continuing stance: %.2f deg\n"
       "  (neck/head yaw, which follow the server's neck angle exactly: largest jump %.1f deg, not counted)\n"
       "lowest body point        %.4f m at %s   target >= -%.2f m   %s\n"
-      "step-in root offset      mean %.4f m  p95 %.4f m  max %.4f m   target <= %.2f m   %s\n",
+      "step-in root offset      mean %.4f m  p95 %.4f m  max %.4f m   target <= %.2f m (+%.2f grid)   %s\n",
       r.frames, r.kicks, r.root_error_m.max(), r.root_error_m.mean(), pf(r.root_error_m.max() <= 0.01),
       r.slide_m.mean(), r.slide_m.percentile(95), r.slide_m.max(), r.max_slide_where.c_str(), r.slide_m.values.size(),
       pf(r.slide_m.mean() <= 0.02), r.contact_m.mean(), r.contact_m.percentile(95), r.contact_m.max(),
@@ -256,7 +256,8 @@ std::string format_report(const QualityReport& r) {
       r.max_jump_deg, r.max_jump_where.c_str(), pf(r.max_jump_deg <= kMaxJumpTarget), r.jumps_over_15, r.joint_frames,
       100.0 * static_cast<double>(r.jumps_over_15) / static_cast<double>(std::max(1L, r.joint_frames)), r.max_jump_swing_deg, r.max_head_jump_deg,
       r.lowest_m, r.lowest_where.c_str(), kGroundTolerance, pf(r.lowest_m >= -kGroundTolerance), r.step_in_m.mean(),
-      r.step_in_m.percentile(95), r.step_in_m.max(), kMaxStepInTarget, pf(r.step_in_m.max() <= kMaxStepInTarget + 1e-3));
+      r.step_in_m.percentile(95), r.step_in_m.max(), kMaxStepInTarget, kStepInQuantM,
+      pf(r.step_in_m.max() <= kMaxStepInTarget + kStepInQuantM));
   return buf;
 }
 

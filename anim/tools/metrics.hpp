@@ -58,6 +58,11 @@ inline constexpr double kGroundTolerance = 0.02;
 // Largest root offset a step-in may add on a kick's contact frame (m): the
 // root leaves its path for that one frame only, so more reads as a jerk.
 inline constexpr double kMaxStepInTarget = 0.30;
+// Positions are on a 1 cm grid (0.5 cm per axis): in the stream, and in the
+// animator's own frames wherever a sole is on the grass (it rounds them,
+// anim/grid_rounding.hpp). The step-in, measured from three roots, gets
+// that much leeway over its target.
+inline constexpr double kStepInQuantM = 0.01;
 // Largest per-dof change between frames outside actions and resets (deg):
 // issue 23's human angular speed for a leg, 60 deg per 50 ms.
 inline constexpr double kMaxJumpTarget = 60.0;

@@ -41,7 +41,7 @@ std::string format_comparison(const QualityReport& k, const QualityReport& m) {
   row("lowest point (m)", k.lowest_m, m.lowest_m, ">= -0.02", k.lowest_m >= -kGroundTolerance,
       m.lowest_m >= -kGroundTolerance);
   row("step-in on contact max (m)", k.step_in_m.max(), m.step_in_m.max(), "<= 0.30",
-      k.step_in_m.max() <= kMaxStepInTarget + 1e-3, m.step_in_m.max() <= kMaxStepInTarget + 1e-3);
+      k.step_in_m.max() <= kMaxStepInTarget + kStepInQuantM, m.step_in_m.max() <= kMaxStepInTarget + kStepInQuantM);
   std::snprintf(line, sizeof line, "%-32s %14s %14s\n", "all targets", targets_hold(k) ? "HOLD" : "FAIL",
                 targets_hold(m) ? "HOLD" : "FAIL");
   out += line;

@@ -20,7 +20,11 @@
 // cost 0.09 % (3,208,492 -> 3,211,314 B; game 2 3,186,532 -> 3,189,378).
 // Soles kept apart and kicks reached with the hip (anim/footsteps.cpp,
 // anim/kick_reach.hpp) added 0.04 % within it (3,212,641 B; game 2
-// 3,190,808).
+// 3,190,808). Then to 3.235 MB: the animator rounds its frames to the
+// grid itself, the hip and knee of each leg on the grass to the grid point
+// either side that keeps its ankle put (anim/grid_rounding.hpp; the
+// grounded foot's speed at 20 Hz a third lower), 0.6 % (3,212,710 ->
+// 3,232,598 B; game 2 3,190,787 -> 3,210,099).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -75,7 +79,7 @@ TEST_P(RealGameSize, StreamAndRecordingMeetTheirTargets) {
   }
   struct stat st {};
   ASSERT_EQ(::stat(path.c_str(), &st), 0);
-  constexpr off_t kRecordingBound = 3'215'000;  // the target is 3'000'000: see the top of this file
+  constexpr off_t kRecordingBound = 3'235'000;  // the target is 3'000'000: see the top of this file
   EXPECT_LE(st.st_size, kRecordingBound) << "the recording of a full game grew past its measured size";
   if (st.st_size > 3'000'000)
     std::printf("[ target ] recording %lld B: over the 3 MB target (not met since issue 23)\n",
