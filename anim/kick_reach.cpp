@@ -10,6 +10,7 @@
 
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/joint_limits.hpp"
 #include "anim/limb_clearance.hpp"
 #include "anim/local_to_model_job.hpp"
 #include "anim/player_animation.hpp"

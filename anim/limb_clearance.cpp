@@ -7,6 +7,7 @@
 
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/joint_limits.hpp"
 #include "anim/local_to_model_job.hpp"
 #include "anim/player_animation.hpp"
 #include "anim/segment_distance.hpp"

@@ -11,6 +11,7 @@
 #include "anim/grid_rounding.hpp"
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/joint_limits.hpp"
 #include "anim/kick_reach.hpp"
 #include "anim/leg_pose_job.hpp"
 #include "anim/limb_clearance.hpp"
@@ -93,53 +94,7 @@ void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<flo
   }
 }
 
-// clamp_to_limits for the legs' joints only (thighs, shins and feet of
-// human_skeleton(), what the leg IK wrote): on every player-frame, the
-// whole skeleton's took 2.1 % more instructions.
-void clamp_legs_to_limits(const SkeletonDef& skeleton, std::span<float> angles) {
-  std::size_t k = dof::kRHip;
-  for (std::size_t j = kRThigh; j <= kLFoot; ++j) {
-    const JointDef& jd = skeleton.joints[j];
-    for (std::size_t d = 0; d < jd.dofs.size(); ++d, ++k) {
-      const float lo = jd.limits[d][0], hi = jd.limits[d][1];
-      if (angles[k] < lo) angles[k] = lo;
-      else if (angles[k] > hi) angles[k] = hi;
-    }
-  }
-}
-
 }  // namespace
-
-int clamp_to_limits(const SkeletonDef& skeleton, std::span<float> angles) {
-  int out = 0;
-  // The built-in skeleton's limits as one flat table, made once: walking
-  // the joints' dof strings for them on every call was 1.5 % of the
-  // animation's instructions.
-  if (&skeleton == &human_skeleton() && angles.size() >= static_cast<std::size_t>(dof::kCount)) {
-    static const auto kLimits = [] {
-      std::array<std::array<float, 2>, dof::kCount> table{};
-      std::size_t n = 0;
-      for (const JointDef& j : human_skeleton().joints)
-        for (std::size_t d = 0; d < j.dofs.size(); ++d) table[n++] = {j.limits[d][0], j.limits[d][1]};
-      return table;
-    }();
-    for (std::size_t k = 0; k < kLimits.size(); ++k) {
-      const float lo = kLimits[k][0], hi = kLimits[k][1];
-      if (angles[k] < lo) { angles[k] = lo; ++out; }
-      else if (angles[k] > hi) { angles[k] = hi; ++out; }
-    }
-    return out;
-  }
-  std::size_t k = 0;
-  for (const JointDef& j : skeleton.joints) {
-    for (std::size_t d = 0; d < j.dofs.size() && k < angles.size(); ++d, ++k) {
-      const float lo = j.limits[d][0], hi = j.limits[d][1];
-      if (angles[k] < lo) { angles[k] = lo; ++out; }
-      else if (angles[k] > hi) { angles[k] = hi; ++out; }
-    }
-  }
-  return out;
-}
 
 void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepParams& fp,
                     const SkeletonDef& limits_from, PlayerPose& out, bool* planted) {

@@ -118,7 +118,4 @@ struct PlayerFrameInput {
 void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepParams& step_params,
                     const SkeletonDef& limits_from, PlayerPose& out, bool* planted = nullptr);
 
-// Clamps each angle into its joint's [min, max]; returns how many were out.
-int clamp_to_limits(const SkeletonDef& skeleton, std::span<float> angles);
-
 }  // namespace mc::anim

@@ -13,6 +13,7 @@
 #include "../anim/synthetic_game.hpp"
 #include "anim/animator.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/joint_limits.hpp"
 #include "anim/mocap/io/motion_source_files.hpp"
 #include "anim/player_animation.hpp"
 #include "anim/tools/metrics.hpp"
