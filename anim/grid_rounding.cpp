@@ -133,6 +133,14 @@ void round_legs_to_grid(const proto::Quantizer& grid, const SkeletonDef& skeleto
     low[i] = i == kicking_leg || segment_lowest_ms(skeleton.joints[foot].segment, m[foot]) + to_grass < kMayBeGroundedM;
   }
   if (!low[0] && !low[1]) return;
+  // A value that is not a number (never made by the animator) is left to
+  // the encoder, which codes it as 0: the float-to-integer steps below
+  // have no answer for it.
+  float sum = pose.x + pose.y + pose.z + pose.heading;
+  for (int d : {dof::kPelvis, dof::kPelvis + 1, dof::kPelvis + 2, dof::kRHip, dof::kRHip + 1, dof::kRHip + 2,
+                dof::kRKnee, dof::kLHip, dof::kLHip + 1, dof::kLHip + 2, dof::kLKnee})
+    sum += pose.angles[static_cast<std::size_t>(d)];
+  if (!std::isfinite(sum)) return;
   // The root, the heading and the pelvis to their nearest grid points, and
   // what that does to a body-space point (X forward, Z right): the root's
   // step turned into the body, the heading's (rad) turning it about the

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -162,6 +163,23 @@ TEST(GridRounding, KeepsTheLowAnklesNearerThanRoundingEachValueOnItsOwn) {
   EXPECT_LT(chosen_mean, 0.55 * nearest_mean);
   EXPECT_LT(chosen_max, 0.7 * nearest_max);
   EXPECT_EQ(worse, 0);
+}
+
+TEST(GridRounding, LeavesAPoseWithANonNumberToTheEncoder) {
+  const proto::Quantizer grid(human_skeleton());
+  PlayerPose p = running_poses(1)[0];
+  const std::vector<glm::mat4> m = posed(p);
+  ASSERT_TRUE(low(p, kRFoot) || low(p, kLFoot));
+  for (int which = 0; which < 3; ++which) {
+    PlayerPose bad = p;
+    float& v = which == 0 ? bad.x : which == 1 ? bad.heading : bad.angles[static_cast<std::size_t>(dof::kRKnee)];
+    v = std::nanf("");
+    PlayerPose r = bad;
+    round_legs_to_grid(grid, human_skeleton(), m.data(), r);
+    const float before[4] = {bad.x, bad.y, bad.z, bad.heading}, after[4] = {r.x, r.y, r.z, r.heading};
+    EXPECT_EQ(std::memcmp(before, after, sizeof before), 0) << "the root left as it was, case " << which;
+    EXPECT_EQ(std::memcmp(bad.angles.data(), r.angles.data(), sizeof r.angles), 0) << "the angles too, case " << which;
+  }
 }
 
 }  // namespace
