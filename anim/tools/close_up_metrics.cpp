@@ -92,9 +92,11 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
     if (std::sscanf(t, "%d %u %u", &trace_slot, &trace_from, &trace_to) != 3) trace_slot = -1;
   PoseFrame drawn;
   const LegBlend legs(skel);
-  // MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the drawn grounded pairs by whether
-  // the foot is on the grass in the 20 Hz frames around them (stderr).
+  // MATCHCAST_CLOSEUP_BREAKDOWN=B sorts the drawn grounded pairs by whether
+  // the foot is on the grass in the 20 Hz frames around them (stderr), for
+  // the speed bands from B up (4, 3 m/s, at least; 10 is 9+ m/s).
   const bool breakdown = m > 1 && std::getenv("MATCHCAST_CLOSEUP_BREAKDOWN");
+  const int bd_band = breakdown ? std::max(4, std::atoi(std::getenv("MATCHCAST_CLOSEUP_BREAKDOWN"))) : 4;
   std::vector<std::array<std::array<bool, 2>, kMaxPlayers>> g20;
   if (breakdown) {
     g20.resize(frames.size());
@@ -179,7 +181,8 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             cx = std::min(cx, clearance(rig, g, rig.shin[s], rig.foot[1 - s]));
           }
           if (slides_over > 0 && (ct < 0 || cs < 0 || cf < 0))
-            std::fprintf(stderr, "close seq %u+%d slot %zu thighs %.3f shins %.3f feet %.3f\n", f.seq, k, p, ct, cs, cf);
+            std::fprintf(stderr, "close seq %u+%d slot %zu thighs %.3f shins %.3f feet %.3f v %.1f\n", f.seq, k, p, ct, cs, cf,
+                         i + 1 < frames.size() ? 20.0 * std::hypot(frames[i + 1].players[p].x - frames[i].players[p].x, frames[i + 1].players[p].y - frames[i].players[p].y) : 0.0);
           if (ct < 0) ++r.thighs_close;
           if (cs < 0) ++r.shins_close;
           if (cf < 0) ++r.feet_close;
@@ -229,7 +232,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             const glm::vec3 pb(g.world[static_cast<std::size_t>(j)] * glm::vec4(fa.contact_ls, 1.0f));
             const double v = std::hypot(pb.x - pa.x, pb.z - pa.z) / dt;
             r.grounded_mps[static_cast<std::size_t>(band)].values.push_back(v);
-            if (breakdown && band >= 4) {
+            if (breakdown && band >= bd_band) {
               const std::size_t hi = std::min(lo + 1, frames.size() - 1);
               const int c = (g20[lo][p][static_cast<std::size_t>(s)] ? 2 : 0) + (g20[hi][p][static_cast<std::size_t>(s)] ? 1 : 0);
               bd_sum[c] += v;
