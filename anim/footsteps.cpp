@@ -23,6 +23,15 @@ constexpr float kPassLength = 0.32f;    // m along the body within which two fee
 // wide (the quality tool's feet too close: nearer than 0.05 m).
 constexpr float kSolesApartM = 0.11f;
 constexpr float kMaxHeelRise = -35.0f;  // deg, the most a planted foot rolls up on its toes
+// Above this gait speed (m/s) a foot stays on the grass until the hip is
+// out of its reach, not a frame before. Lifting it a frame early cut a
+// sprinter's stance to one frame (0.05 s, half of Weyand et al.'s 0.1 s),
+// and the clients, blending from a foot on the grass to one in the air,
+// drew it sliding as it left: the 9+ m/s band's grounded foot was 3.9 m/s
+// at 60 Hz. Below 7.5 m/s the later lift also cut the 4-6 m/s bands'
+// sliding by a sixth, but left the swinging thigh passing through the
+// planted one in the blend 7 times as often (anim/README.md).
+constexpr float kLeaveLateSpeed = 7.5f;
 
 float wrap01(float p) { return p - std::floor(p); }
 
@@ -110,6 +119,7 @@ void plant(FootState& f, float x, float y, float yaw, float pitch) {
   f.u = 0;
   f.stance_s = 0;
   f.release = false;
+  f.leaving = false;
 }
 
 // Below this root speed (m/s) a body has no flight phase (human running
@@ -131,6 +141,7 @@ void lift(FootState& f, float phase_left, float lift_m) {
   f.phase_left = std::max(phase_left, 0.05f);
   f.lift = lift_m;
   f.release = false;
+  f.leaving = false;
 }
 
 // Ankle of a swinging foot at its progress.
@@ -272,7 +283,7 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
     FootState& f = s.feet[i];
     FootState& o = s.feet[1 - i];
     ++f.since_landing;
-    if (f.held) { f.release = false; continue; }
+    if (f.held) { f.release = f.leaving = false; continue; }
     if (f.planted) {
       f.stance_s += dt;
       // Pivot: a foot turned well away from the heading turns about its sole's centre.
@@ -307,12 +318,24 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
         phase_left = 1.0f - fp;
         float ax, ay, ah;
         planted_ankle(f.x, f.y, f.yaw, kMaxHeelRise, ax, ay, ah);
-        float hx, hz;
-        next_body.to_body(ax, ay, hx, hz);
-        hz -= kSide[i] * dims::kHipHalfWidth;
         const float hip_h = stride_pelvis - 0.03f - dims::kHipDrop;
-        const float reach2 = prm.reach * prm.reach - (hip_h - ah) * (hip_h - ah);
-        const bool out_of_reach = hx * hx + hz * hz > std::max(reach2, 0.0f);
+        const float reach2 = std::max(prm.reach * prm.reach - (hip_h - ah) * (hip_h - ah), 0.0f);
+        const auto beyond_reach = [&](const BodyFrame& hip) {
+          float hx, hz;
+          hip.to_body(ax, ay, hx, hz);
+          hz -= kSide[i] * dims::kHipHalfWidth;
+          return hx * hx + hz * hz > reach2;
+        };
+        // A foot the hip will have left out of reach at the next frame:
+        // below kLeaveLateSpeed it lifts now; above, it still bears the body
+        // on this frame (it is within reach) and lifts between the two. One
+        // that landed on the last frame stays: its landing was within the
+        // hip's reach of this frame (a foot that lifted again at once made a
+        // step of 0.1 s, 8 steps/s).
+        const bool late = s.speed > kLeaveLateSpeed;
+        const bool out_of_reach =
+            f.leaving || (late ? f.stance_s > 1.5f * dt && beyond_reach(body) : beyond_reach(next_body));
+        f.leaving = late && !out_of_reach && beyond_reach(next_body);
         // Walking, a foot that is due waits for the other to land (that one
         // hurries, below) rather than leave the body in the air; one about to
         // be left out of reach goes anyway.
@@ -322,6 +345,7 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
       } else {
         // Settling: the foot further from its resting spot steps, one at a
         // time, the other down for at least 0.15 s.
+        f.leaving = false;
         float rx, ry;
         rest_spot(body, i, prm.foot_spacing, rx, ry);
         const float d = pm::hypot(f.x - rx, f.y - ry);

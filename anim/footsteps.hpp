@@ -68,6 +68,7 @@ struct FootState {
   float stance_s = 0;         // s on the grass since touch-down
   int since_landing = 100;    // frames since the last touch-down (cadence guard)
   bool release = false;       // set by the caller: lift this planted foot now (joint speed limit)
+  bool leaving = false;       // planted, out of the hip's reach from the next frame: lifts then
   bool hurry = false;         // the other foot waits for this one to land
   bool held = false;          // set by the caller: this foot is an action's (a kick's); leave it be
 };

@@ -346,8 +346,14 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     if (act != nullptr && act->feet && w > 0)
       for (int i = 0; i < 2; ++i) lift[i] = i != act->kick_foot && act->foot_weight[i] > 0;
     const int pulled = limit_ankle_travel(limits_from, body, ctx.ankles, skip, lift, goal, legs);
+    // A planted foot pulled back (a sprinter's hip carried past it) lets go
+    // of the grass next frame: planted again, it stepped twice on one
+    // spot, 8 steps/s (issue 4's cadence, game 1 seq 10484).
     for (int i = 0; i < 2; ++i)
-      if ((pulled & (1 << i)) != 0) lo.planted[i] = false;
+      if ((pulled & (1 << i)) != 0) {
+        if (lo.planted[i]) ctx.loco.feet[i].release = true;
+        lo.planted[i] = false;
+      }
   }
   // The IK legs within their joint limits before they are kept apart: a
   // kick's follow-through asked a hip past its -40 deg, and clamped after
@@ -457,7 +463,8 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     for (int i = 0; i < 2; ++i) legs.feet[i] = feet[i];
     touch_ball(limits_from, body, pelvis_h, *act, act->kick_foot, legs, a);
   }
-  if (act == nullptr || !act->whole_body) keep_hands_off_thighs(limits_from, a);
+  if (act == nullptr || !act->whole_body)
+    keep_hands_off_thighs(limits_from, a, in.reset ? std::span<const float>() : std::span<const float>(ctx.last_angles));
   // Joint speed limit (not across a teleport). Where it holds a planted leg
   // back, that foot lets go of the grass next frame rather than slide.
   bool limited[kHumanJointCount] = {};
