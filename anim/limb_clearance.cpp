@@ -48,6 +48,59 @@ float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards) {
   return outside + inside;
 }
 
+namespace {
+
+constexpr std::uint32_t kHandJoints = (1u << kPelvis) | (1u << kTorso) | (1u << kRUpperArm) | (1u << kRLowerArm) |
+                                      (1u << kRHand) | (1u << kLUpperArm) | (1u << kLLowerArm) | (1u << kLHand) |
+                                      (1u << kRThigh) | (1u << kLThigh);
+
+bool pose_hands(const SkeletonDef& skel, std::span<const float> a, std::array<glm::mat4, kHumanJointCount>& m) {
+  LocalToModelJob fk{&skel, a, glm::vec3(0.0f, 1.0f, 0.0f), m};
+  fk.joint_mask = kHandJoints;
+  return fk.Run();
+}
+
+// How deep (m) the hand of `side` (0 right) is in its own thigh's box in
+// the posed `m`: > 0 inside, < 0 its distance outside, or `clear` when it
+// is surely further out than `clear` (the box tests below).
+float hand_in_thigh(const SkeletonDef& skel, const std::array<glm::mat4, kHumanJointCount>& m, int side, float clear) {
+  const int hand = side == 0 ? kRHand : kLHand, thigh = side == 0 ? kRThigh : kLThigh;
+  const Segment& hs = skel.joints[static_cast<std::size_t>(hand)].segment;
+  const Segment& ts = skel.joints[static_cast<std::size_t>(thigh)].segment;
+  const glm::vec3 hc(hs.center[0], hs.center[1], hs.center[2]);
+  const glm::vec3 hh(0.5f * hs.size[0], 0.5f * hs.size[1], 0.5f * hs.size[2]);
+  const float hand_radius = glm::length(hh);
+  const glm::mat4& th = m[static_cast<std::size_t>(thigh)];
+  const glm::mat4& hm = m[static_cast<std::size_t>(hand)];
+  // The hand's box in the thigh's space: its centre and half axes.
+  const glm::mat3 to_thigh = glm::transpose(glm::mat3(th));
+  const glm::vec3 c = to_thigh * (glm::vec3(hm * glm::vec4(hc, 1.0f)) - glm::vec3(th[3]));
+  // Most frames: the hand's centre is further from the thigh's box than
+  // its own half diagonal and the clearance.
+  glm::vec3 n;
+  const float centre_out = box_distance(ts, c, &n);
+  if (centre_out > hand_radius - clear) return clear;
+  const glm::mat3 axes = to_thigh * glm::mat3(hm);
+  const glm::vec3 ax = axes[0] * hh.x, ay = axes[1] * hh.y, az = axes[2] * hh.z;
+  // Many more: the plane through the thigh box's point nearest the hand's
+  // centre, facing it, has the whole thigh box behind it (the box is
+  // convex); no point of the hand's box is nearer that plane than the
+  // centre's distance less the box's reach along its normal. When that is
+  // the clearance and a margin far above float rounding, every sample
+  // below is clear too: the same answer without its 45 distances (issue
+  // 23: the animation of a full game within 1 s).
+  const float reach = std::fabs(glm::dot(ax, n)) + std::fabs(glm::dot(ay, n)) + std::fabs(glm::dot(az, n));
+  if (centre_out - reach > -clear + 1e-4f) return clear;
+  float depth = -1.0f;  // the deepest sample point
+  for (float sx : {-1.0f, 0.0f, 1.0f})
+    for (float sy : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f})
+      for (float sz : {-1.0f, 0.0f, 1.0f})
+        depth = std::max(depth, -box_distance(ts, c + sx * ax + sy * ay + sz * az, nullptr));
+  return depth;
+}
+
+}  // namespace
+
 // A leg splayed sideways (a
 // quick turn, a lateral lunge) or swinging forward past a hand swinging
 // back would pass through it; instead the arm is lifted away from the body
@@ -55,64 +108,43 @@ float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards) {
 // clear of the thigh's, as a person moves the arm out of the way. The 6 cm
 // keep them apart in the clients' blend between two frames as well: of the
 // two full games' frames drawn at 60 Hz, 1 cm left 40 and 40 with a hand
-// more than 2 cm inside, 3 cm 10 and 4, 5 cm 0 and 1, 6 cm none.
-void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a) {
-  constexpr float kClearM = -0.06f;  // the hand's deepest point at least 6 cm outside the thigh
-  constexpr std::uint32_t kJoints = (1u << kPelvis) | (1u << kTorso) | (1u << kRUpperArm) | (1u << kRLowerArm) |
-                                    (1u << kRHand) | (1u << kLUpperArm) | (1u << kLLowerArm) | (1u << kLHand) |
-                                    (1u << kRThigh) | (1u << kLThigh);
+// more than 2 cm inside, 3 cm 10 and 4, 5 cm 0 and 1, 6 cm none. With
+// `last` (the frame before), the blend is checked too: a sprinter's knee
+// coming up 24 deg a frame past a hand swinging back went from 6 cm clear
+// to 3.2 cm inside in the first third (game 2 seq 1920, 60 Hz).
+void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::span<const float> last) {
+  constexpr float kClearM = -0.06f;       // the hand's deepest point at least 6 cm outside the thigh
+  constexpr float kBlendClearM = -0.01f;  // and in the clients' blend at least 1 cm
+  constexpr float kNearM = -0.25f;        // a frame's hand this far out is not checked in the blend
+  constexpr float kThirds[2] = {1.0f / 3.0f, 2.0f / 3.0f};
   std::array<glm::mat4, kHumanJointCount> m;
-  auto pose = [&] {
-    LocalToModelJob fk{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0.0f, 1.0f, 0.0f), m};
-    fk.joint_mask = kJoints;
-    return fk.Run();
-  };
-  if (!pose()) return;
-  auto half_diagonal = [](const Segment& sg) { return 0.5f * glm::length(glm::vec3(sg.size[0], sg.size[1], sg.size[2])); };
+  if (!pose_hands(skel, a, m)) return;
+  std::array<float, dof::kCount> between{};
+  const bool blend = last.size() == a.size() && a.size() == between.size();
   for (int side = 0; side < 2; ++side) {
-    const int hand = side == 0 ? kRHand : kLHand, thigh = side == 0 ? kRThigh : kLThigh;
     const auto abduct = static_cast<std::size_t>((side == 0 ? dof::kRShoulder : dof::kLShoulder) + 1);
     const float outward = side == 0 ? -1.0f : 1.0f;  // the shoulder's x dof away from the body
-    const Segment& hs = skel.joints[static_cast<std::size_t>(hand)].segment;
-    const Segment& ts = skel.joints[static_cast<std::size_t>(thigh)].segment;
     const auto& lim = skel.joints[static_cast<std::size_t>(side == 0 ? kRUpperArm : kLUpperArm)].limits[1];
-    const glm::vec3 hc(hs.center[0], hs.center[1], hs.center[2]);
-    const glm::vec3 hh(0.5f * hs.size[0], 0.5f * hs.size[1], 0.5f * hs.size[2]);
-    const float hand_radius = half_diagonal(hs);
     for (int it = 0; it < 6; ++it) {
-      if (it > 0 && !pose()) return;
-      const glm::mat4& th = m[static_cast<std::size_t>(thigh)];
-      const glm::mat4& hm = m[static_cast<std::size_t>(hand)];
-      // The hand's box in the thigh's space: its centre and half axes.
-      const glm::mat3 to_thigh = glm::transpose(glm::mat3(th));
-      const glm::vec3 c = to_thigh * (glm::vec3(hm * glm::vec4(hc, 1.0f)) - glm::vec3(th[3]));
-      // Most frames: the hand's centre is further from the thigh's box than
-      // its own half diagonal and the clearance.
-      glm::vec3 n;
-      const float centre_out = box_distance(ts, c, &n);
-      if (centre_out > hand_radius - kClearM) break;
-      const glm::mat3 axes = to_thigh * glm::mat3(hm);
-      const glm::vec3 ax = axes[0] * hh.x, ay = axes[1] * hh.y, az = axes[2] * hh.z;
-      // Many more: the plane through the thigh box's point nearest the
-      // hand's centre, facing it, has the whole thigh box behind it (the
-      // box is convex); no point of the hand's box is nearer that plane
-      // than the centre's distance less the box's reach along its normal.
-      // When that is the clearance and a margin far above float rounding,
-      // every sample below is clear too and the loop would stop at once:
-      // the same pose, without its 45 distances (issue 23: the animation
-      // of a full game within 1 s).
-      const float reach = std::fabs(glm::dot(ax, n)) + std::fabs(glm::dot(ay, n)) + std::fabs(glm::dot(az, n));
-      if (centre_out - reach > -kClearM + 1e-4f) break;
-      float depth = -1.0f;  // the deepest sample point: > 0 inside, < 0 its distance outside
-      for (float sx : {-1.0f, 0.0f, 1.0f})
-        for (float sy : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f})
-          for (float sz : {-1.0f, 0.0f, 1.0f})
-            depth = std::max(depth, -box_distance(ts, c + sx * ax + sy * ay + sz * az, nullptr));
-      if (depth <= kClearM) break;
+      if (it > 0 && !pose_hands(skel, a, m)) return;
+      // Metres the hand is to move out: at this frame, and (for a third
+      // of the blend, moved by a third of this frame's turn) in between.
+      float out = hand_in_thigh(skel, m, side, blend ? kNearM : kClearM) - kClearM;
+      if (blend && out > kNearM - kClearM) {
+        for (float t : kThirds) {
+          for (std::size_t d = 0; d < between.size(); ++d) between[d] = last[d] + (a[d] - last[d]) * t;
+          std::array<glm::mat4, kHumanJointCount> mb;
+          if (!pose_hands(skel, between, mb)) return;
+          out = std::max(out, (hand_in_thigh(skel, mb, side, kBlendClearM) - kBlendClearM) / t);
+        }
+      }
+      if (out <= 0) break;
       // The hand is ~0.6 m from the shoulder: the angle that moves it
-      // `depth` out.
-      const float step = std::max(0.5f, (depth - kClearM) / 0.6f * 57.2958f);
+      // `out` further.
+      const float step = std::max(0.5f, out / 0.6f * 57.2958f);
+      const float before = a[abduct];
       a[abduct] = std::clamp(a[abduct] + outward * step, lim[0], lim[1]);
+      if (a[abduct] == before) break;
     }
   }
 }

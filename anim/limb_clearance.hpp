@@ -27,8 +27,10 @@ float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards);
 
 // A hand never sinks into its own side's thigh: the arm is lifted away from
 // the body (shoulder abduction) until the hand's box is 6 cm clear of the
-// thigh's. `a`: the pose's angles (deg), changed in place.
-void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a);
+// thigh's, and, given the frame before (`last`, the same size as `a`), 1 cm
+// clear at a third and two thirds of the clients' blend from it. `a`: the
+// pose's angles (deg), changed in place.
+void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::span<const float> last = {});
 
 // The legs' centre lines (thighs, shins, feet) keep half a box width apart
 // plus a margin: a leg in the air is turned out at the hip (with both in

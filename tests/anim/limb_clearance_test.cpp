@@ -1,11 +1,17 @@
 // separate_legs: with both feet up, the leg that has crossed towards the
 // other side is the one turned out; with a foot planted, only the leg in the
 // air turns. separate_legs_again: as far as the hip's speed limit lets it.
+// keep_hands_off_thighs: a hand out of its thigh, at the frame and in the
+// clients' blend from the frame before.
 #include "anim/limb_clearance.hpp"
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <span>
+
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
@@ -79,6 +85,76 @@ TEST(SeparateLegsAgain, ATurnOutTooFastInFullTurnsAsFarAsTheLimitLets) {
   EXPECT_LT(a[dof::kLHip + 1], free[dof::kLHip + 1]) << "not the whole way";
   EXPECT_LE(rotation_between("zxy", &last[dof::kLHip], &a[dof::kLHip]), kMaxLegStepDeg + 8.0f + 1e-3f);
   EXPECT_FLOAT_EQ(a[dof::kRHip + 1], -2.0f);  // the planted leg stays
+}
+
+// keep_hands_off_thighs. How deep (m) the left hand's box is in the left
+// thigh's at the pose `a`: the deepest of its corners, edge midpoints and
+// centre (> 0 inside).
+float left_hand_depth(std::span<const float> a) {
+  const SkeletonDef& skel = human_skeleton();
+  std::array<glm::mat4, kHumanJointCount> m;
+  LocalToModelJob fk{&skel, a, glm::vec3(0.0f, 1.0f, 0.0f), m};
+  EXPECT_TRUE(fk.Run());
+  const Segment& hs = skel.joints[kLHand].segment;
+  const Segment& ts = skel.joints[kLThigh].segment;
+  const glm::mat4 to_thigh = glm::inverse(m[kLThigh]) * m[kLHand];
+  float depth = -1;
+  for (float sx : {-0.5f, 0.0f, 0.5f})
+    for (float sy : {-0.5f, 0.0f, 0.5f})
+      for (float sz : {-0.5f, 0.0f, 0.5f}) {
+        const glm::vec3 p(hs.center[0] + sx * hs.size[0], hs.center[1] + sy * hs.size[1], hs.center[2] + sz * hs.size[2]);
+        depth = std::max(depth, -box_distance(ts, glm::vec3(to_thigh * glm::vec4(p, 1.0f)), nullptr));
+      }
+  return depth;
+}
+
+std::array<float, dof::kCount> blend(const std::array<float, dof::kCount>& a, const std::array<float, dof::kCount>& b,
+                                     float t) {
+  std::array<float, dof::kCount> o{};
+  for (std::size_t d = 0; d < o.size(); ++d) o[d] = a[d] + (b[d] - a[d]) * t;
+  return o;
+}
+
+// Two frames of game 2 (seq 1920-1921, right 3, sprinting at 8.5 m/s): the
+// left thigh, raised and turned out 45 deg, comes in as the left arm
+// swings back. Each frame has the hand clear of the thigh, and the
+// clients' blend at 60 Hz drew it 3.2 cm inside.
+constexpr std::array<float, dof::kCount> kSprintLast{
+    2.37f,   -3.97f, 1.03f,  -4.78f,  -6.09f, -0.69f, 35.15f, 5.08f,  0.00f,  52.72f,   3.05f,  0.00f,
+    -32.28f, -20.0f, 0.00f,  86.99f,  0.00f,  0.00f,  -8.35f, 26.82f, 0.00f,  86.99f,   0.00f,  0.00f,
+    -21.19f, 9.40f,  -1.44f, -19.37f, 20.19f, -9.79f, 97.56f, 44.54f, -1.91f, -111.03f, 12.30f, 6.07f};
+constexpr std::array<float, dof::kCount> kSprintNow{
+    -2.99f,  -4.06f, -1.03f, 7.48f,   -6.09f, 1.03f,  10.48f, 5.08f,  0.00f,  15.72f,  3.05f,  0.00f,
+    -1.61f,  -20.0f, 0.00f,  86.99f,  0.00f,  0.00f,  -39.02f, 20.00f, 0.00f, 86.99f,  0.00f,  0.00f,
+    -34.77f, 13.80f, 2.99f,  -33.56f, 33.00f, -14.36f, 85.96f, 12.13f, 2.99f, -81.94f, -0.29f, 2.33f};
+
+TEST(KeepHandsOffThighs, AHandInTheThighIsLiftedOut) {
+  std::array<float, dof::kCount> a{};
+  a[dof::kLHip + 1] = 20;  // the left thigh splayed out, the arm hanging at the side
+  ASSERT_GT(left_hand_depth(a), 0.05f);
+  keep_hands_off_thighs(human_skeleton(), a);
+  EXPECT_LE(left_hand_depth(a), -0.055f);
+  EXPECT_GT(a[dof::kLShoulder + 1], 0.0f);  // lifted away from the body (left: +X)
+}
+
+TEST(KeepHandsOffThighs, TheClientsBlendFromTheLastFrameIsKeptClear) {
+  // The case as it was: both frames clear, a third of the way inside.
+  ASSERT_LT(left_hand_depth(kSprintLast), -0.04f);
+  ASSERT_LT(left_hand_depth(kSprintNow), -0.04f);
+  ASSERT_GT(left_hand_depth(blend(kSprintLast, kSprintNow, 1.0f / 3.0f)), 0.02f);
+  // Without the last frame the blend is not seen.
+  auto alone = kSprintNow;
+  keep_hands_off_thighs(human_skeleton(), alone);
+  EXPECT_GT(left_hand_depth(blend(kSprintLast, alone, 1.0f / 3.0f)), 0.02f);
+  // With it, the arm turns out at this frame far enough for the blend.
+  auto a = kSprintNow;
+  keep_hands_off_thighs(human_skeleton(), a, kSprintLast);
+  // (It aims at 1 cm clear; the arm's first-order step undershoots here, 1 mm.)
+  for (float t : {1.0f / 3.0f, 0.5f, 2.0f / 3.0f}) EXPECT_LE(left_hand_depth(blend(kSprintLast, a, t)), 0.0f) << t;
+  EXPECT_GT(a[dof::kLShoulder + 1], kSprintNow[dof::kLShoulder + 1]);
+  EXPECT_LE(a[dof::kLShoulder + 1] - kSprintLast[dof::kLShoulder + 1], 45.0f);  // the arms' bound a frame
+  // The right arm, clear throughout, is left alone.
+  EXPECT_EQ(a[dof::kRShoulder + 1], kSprintNow[dof::kRShoulder + 1]);
 }
 
 }  // namespace

@@ -24,7 +24,10 @@
 // grid itself, the hip and knee of each leg on the grass to the grid point
 // either side that keeps its ankle put (anim/grid_rounding.hpp; the
 // grounded foot's speed at 20 Hz a third lower), 0.6 % (3,212,710 ->
-// 3,232,598 B; game 2 3,190,787 -> 3,210,099).
+// 3,232,598 B; game 2 3,190,787 -> 3,210,099). Then to 3.240 MB: a
+// sprinter's foot on the grass for two frames, not one (anim/footsteps.cpp;
+// the 9+ m/s band's grounded foot at 60 Hz 3.9 -> 0.6 m/s), 0.13 %
+// (3,236,763 B; game 2 3,216,467).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -79,7 +82,7 @@ TEST_P(RealGameSize, StreamAndRecordingMeetTheirTargets) {
   }
   struct stat st {};
   ASSERT_EQ(::stat(path.c_str(), &st), 0);
-  constexpr off_t kRecordingBound = 3'235'000;  // the target is 3'000'000: see the top of this file
+  constexpr off_t kRecordingBound = 3'240'000;  // the target is 3'000'000: see the top of this file
   EXPECT_LE(st.st_size, kRecordingBound) << "the recording of a full game grew past its measured size";
   if (st.st_size > 3'000'000)
     std::printf("[ target ] recording %lld B: over the 3 MB target (not met since issue 23)\n",
