@@ -180,9 +180,12 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             cx = std::min(cx, clearance(rig, g, rig.thigh[s], rig.foot[1 - s]));
             cx = std::min(cx, clearance(rig, g, rig.shin[s], rig.foot[1 - s]));
           }
-          if (slides_over > 0 && (ct < 0 || cs < 0 || cf < 0))
-            std::fprintf(stderr, "close seq %u+%d slot %zu thighs %.3f shins %.3f feet %.3f v %.1f\n", f.seq, k, p, ct, cs, cf,
-                         i + 1 < frames.size() ? 20.0 * std::hypot(frames[i + 1].players[p].x - frames[i].players[p].x, frames[i + 1].players[p].y - frames[i].players[p].y) : 0.0);
+          if (slides_over > 0 && (ct < 0 || cs < 0 || cf < 0)) {
+            // The root's speed over this 20 Hz interval: which gait brings legs together.
+            const PlayerPose& next = frames[std::min(i + 1, frames.size() - 1)].players[p];
+            const double v = std::hypot(next.x - frames[i].players[p].x, next.y - frames[i].players[p].y) / frame_s;
+            std::fprintf(stderr, "close seq %u+%d slot %zu thighs %.3f shins %.3f feet %.3f v %.1f\n", f.seq, k, p, ct, cs, cf, v);
+          }
           if (ct < 0) ++r.thighs_close;
           if (cs < 0) ++r.shins_close;
           if (cf < 0) ++r.feet_close;
@@ -418,8 +421,8 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
     double total = 0;
     for (double x : bd_sum) total += x;
     for (int c = 0; c < 4; ++c)
-      std::fprintf(stderr, "drawn grounded pairs, root >= 3 m/s, 20 Hz feet %s: %ld pairs, mean %.2f m/s, %.0f %% of the sliding\n",
-                   names[c], bd_n[c], bd_n[c] ? bd_sum[c] / static_cast<double>(bd_n[c]) : 0.0, total > 0 ? 100 * bd_sum[c] / total : 0.0);
+      std::fprintf(stderr, "drawn grounded pairs, root >= %d m/s, 20 Hz feet %s: %ld pairs, mean %.2f m/s, %.0f %% of the sliding\n",
+                   bd_band - 1, names[c], bd_n[c], bd_n[c] ? bd_sum[c] / static_cast<double>(bd_n[c]) : 0.0, total > 0 ? 100 * bd_sum[c] / total : 0.0);
     const char* speeds[4] = {"< 1", "1-3", "3-6", "6+"};
     for (int c = 0; c < 4; ++c)
       for (int q = 0; q < 4; ++q)
