@@ -211,8 +211,10 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
   // below kApartSpeedDeg, so that the legs never turn faster than the
   // frames let them, and at the rate its ankle's travel about the root
   // leaves below kApartTravelM (a fast foot carried sideways reads as a
-  // pop), up to kMaxApartDeg.
-  float room[2];
+  // pop), up to kMaxApartDeg. `along`: the same for a turn that may carry
+  // the ankle along its travel (the feet's, below), whose move adds to the
+  // travel rather than in quadrature.
+  float room[2], along[2];
   for (std::size_t i = 0; i < 2; ++i) {
     const Joint& th = leg_[i].thigh;
     const std::string& dofs = joints[static_cast<std::size_t>(th.index)].dofs;
@@ -228,8 +230,9 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
     const float ramp = std::min(t, 1.0f - t);
     room[i] = std::min({kMaxApartDeg * kDeg, std::max(0.0f, kApartSpeedDeg - speed) * kDeg * ramp,
                         sideways / kApartLeverM * ramp});
+    along[i] = std::min(room[i], std::max(0.0f, kApartTravelM - travel[i]) / kApartLeverM * ramp);
   }
-  keep_apart(in_air, room, o);
+  keep_apart(in_air, room, along, o);
 }
 
 void LegBlend::turn_thigh(const Leg& leg, const glm::mat4& pelvis, const glm::mat4& thigh, const glm::mat3& rotation,
@@ -255,13 +258,13 @@ void LegBlend::turn_thigh(const Leg& leg, const glm::mat4& pelvis, const glm::ma
   }
 }
 
-void LegBlend::keep_apart(const bool in_air[2], float room[2], PlayerPose& o) const {
+void LegBlend::keep_apart(const bool in_air[2], float room[2], float along[2], PlayerPose& o) const {
   const auto& joints = skeleton_.joints;
   float* q = o.angles.data();
   auto local = [&](const Joint& j) { return local_model(joints, j.index, j.first_angle, q); };
-  // Twice: the second round takes up what a turn across the legs' line
-  // (rather than along it) left.
-  for (int round = 0; round < 2; ++round) {
+  // kApartRounds times: each round takes up what the turn before left (a
+  // turn is a rotation, and the nearest points move as it goes).
+  for (int round = 0; round < kApartRounds; ++round) {
     const glm::mat4 pelvis = root_model_of(joints[0], q, o.z);
     glm::mat4 thigh[2], shin[2], foot[2];
     float share[2];
@@ -279,6 +282,7 @@ void LegBlend::keep_apart(const bool in_air[2], float room[2], PlayerPose& o) co
     if (shares <= 0.0f) return;
     // The pair of boxes furthest inside their distance.
     float shortfall = 0;
+    bool feet = false;
     ClosestPoints closest;
     const std::pair<const Joint Leg::*, const glm::mat4*> pairs[] = {
         {&Leg::thigh, thigh}, {&Leg::shin, shin}, {&Leg::foot, foot}};
@@ -293,26 +297,36 @@ void LegBlend::keep_apart(const bool in_air[2], float room[2], PlayerPose& o) co
       const float need = kApartM + std::max(j0.half_width, j1.half_width) - c.distance;
       if (need > shortfall) {
         shortfall = need;
+        feet = member == &Leg::foot;
         closest = c;
       }
     }
     if (shortfall <= 0.0f) return;
-    // Each leg in the air turns out at the hip, away from the other hip,
-    // by its share of the shortfall: the angle that moves its nearest point
-    // that far outwards.
+    // Each leg in the air turns at the hip by its share of the shortfall:
+    // the angle that moves its nearest point that far away from the other
+    // leg's. Thighs and shins move out, away from the other hip. Feet move
+    // apart along the line between their nearest points: they pass each
+    // other front to back as well as side to side, and moved out from the
+    // other hip one may slide along the other or even towards it (a real
+    // case: LegBlend.FeetThatMeetInTheBlendPartAlongTheLineBetweenThem).
+    // On the two full games, feet drawn too close at 60 Hz in four rounds:
+    // 46 and 39 player-frames moving out, 30 and 31 along that line.
     const glm::vec3 hip[2] = {glm::vec3(thigh[0][3]), glm::vec3(thigh[1][3])};
+    const glm::vec3 gap = closest.on_first - closest.on_second;
+    const bool between_feet = feet && glm::length(gap) >= 1e-3f;
     for (std::size_t i = 0; i < 2; ++i) {
       if (share[i] <= 0.0f) continue;
       const glm::vec3 lever = (i == 0 ? closest.on_first : closest.on_second) - hip[i];
-      const glm::vec3 across = hip[i] - hip[1 - i];
-      const float width = glm::length(across);
+      const glm::vec3 away = between_feet ? (i == 0 ? gap : -gap) : hip[i] - hip[1 - i];
+      const float width = glm::length(away);
       if (width < 1e-4f) continue;
-      const glm::vec3 axis = glm::cross(lever, across / width);
-      const float reach = glm::length(axis);  // outward travel per radian
+      const glm::vec3 axis = glm::cross(lever, away / width);
+      const float reach = glm::length(axis);  // travel away per radian
       if (reach < 1e-3f) continue;
-      const float angle = std::min(shortfall * share[i] / shares / reach, room[i]);
+      const float angle = std::min(shortfall * share[i] / shares / reach, between_feet ? along[i] : room[i]);
       if (angle <= 0.0f) continue;
       room[i] -= angle;
+      along[i] -= angle;
       turn_thigh(leg_[i], pelvis, thigh[i], axis_rotation(axis / reach, angle), q);
     }
   }

@@ -22,9 +22,10 @@
 // stays the frames' own.
 // Then the legs are kept apart: both frames hold the legs' boxes apart
 // (anim/limb_clearance.cpp), but a leg swinging past the other passes
-// through it in the blend. A leg in the air turns out at the hip, away from
-// the other hip, until the centre lines of the two thighs, shins and feet
-// are kApartM beyond half the wider box's width. The turn may grow only
+// through it in the blend. A leg in the air turns at the hip, away from
+// the other hip (for feet: from the other foot), until the centre lines of
+// the two thighs, shins and feet are kApartM beyond half the wider box's
+// width. The turn may grow only
 // from nothing at either frame, at the rate the thigh's own turn over the
 // frame leaves below kApartSpeedDeg, and at the rate its ankle's travel
 // about the root leaves below kApartTravelM, up to kMaxApartDeg (a fast
@@ -87,6 +88,12 @@ class LegBlend {
   // pop), the turn's move taken at this distance from the hip (m).
   static constexpr float kApartTravelM = 0.47f;
   static constexpr float kApartLeverM = 0.85f;
+  // How many times the legs are posed and turned apart (each round takes
+  // up what the one before left). With every leg turned out from the
+  // other hip, 2 rounds left 65 and 52 player-frames of feet too close on
+  // the two full games at 60 Hz, 4 left 46 and 39; with feet parted along
+  // their line, 4 and 6 rounds both leave 30-31.
+  static constexpr int kApartRounds = 4;
 
  private:
   struct Joint {
@@ -110,8 +117,9 @@ class LegBlend {
                   float* angles) const;
   // The second part of the step: the legs' boxes kept apart. `in_air`: the
   // foot is off the grass in both frames; `room`: how far each leg may
-  // still turn (rad), used up as it turns.
-  void keep_apart(const bool in_air[2], float room[2], PlayerPose& o) const;
+  // still turn (rad), and `along` how far in a turn that may carry its
+  // ankle along its travel; both used up as it turns.
+  void keep_apart(const bool in_air[2], float room[2], float along[2], PlayerPose& o) const;
 
   const SkeletonDef& skeleton_;
   std::array<Leg, 2> leg_{};

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <initializer_list>
 #include <random>
 #include <utility>
 #include <vector>
@@ -196,6 +197,51 @@ TEST(LegBlend, ALegSwingingPastTheOtherTurnsOutOfItsWay) {
   // Only the leg in the air turned: the planted left foot stays put.
   EXPECT_LT(glm::length(ankle(drawn, 1) - ankle(plain, 1)), 1e-4f);
   EXPECT_GT(glm::length(ankle(drawn, 0) - ankle(plain, 0)), 0.005f);
+}
+
+// Two real frames (game 1, seq 2428-2429, slot 18, 1.6 m/s): both feet in
+// the air, apart in both frames, the feet's centre lines 9 mm inside their
+// distance a third of the way between them. Turned out, away from the other
+// hip, the feet went 3.8 cm inside: the nearest points moved towards each
+// other. They part along the line between those points.
+PlayerPose real_frame(float x, float y, float z, float heading, std::initializer_list<float> angles) {
+  PlayerPose p;
+  p.side = Side::Left;
+  p.unum = 7;
+  p.x = x;
+  p.y = y;
+  p.z = z;
+  p.heading = heading;
+  std::copy(angles.begin(), angles.end(), p.angles.begin());
+  return p;
+}
+
+TEST(LegBlend, FeetThatMeetInTheBlendPartAlongTheLineBetweenThem) {
+  const PlayerPose a = real_frame(
+      -32.95f, -19.68f, 0.96f, 134.5055f,
+      {0.39f,  -1.0f,  0.04f,  -0.45f, -0.6f,   -0.35f,  2.17f,   0.54f,  -0.3f,  3.16f,  0.54f,  -0.3f,
+       -3.67f, -18.63f, 0.09f, 11.88f, 0.29f,   -0.3f,   -2.68f,  12.57f, 0.09f,  11.88f, 0.29f,  -0.3f,
+       -1.39f, -30.2f, -38.07f, -32.24f, 16.23f, 24.45f, -14.26f, -23.12f, -34.11f, -11.45f, 10.29f, 27.42f});
+  const PlayerPose b = real_frame(
+      -32.97f, -19.6f, 0.95f, 135.4945f,
+      {1.38f,  -1.0f,  1.03f,  -3.42f, -1.59f,  -1.34f,  4.15f,   0.54f,  -0.3f,  7.12f,  0.54f,  -0.3f,
+       -7.63f, -12.69f, 0.09f, 11.88f, 0.29f,   -0.3f,   0.29f,   12.57f, 0.09f,  11.88f, 0.29f,  -0.3f,
+       33.26f, -11.39f, -14.31f, -61.94f, 28.11f, 0.69f, -19.21f, -26.09f, -33.12f, -11.45f, 12.27f, 28.41f});
+  ASSERT_GT(sole(a, 0), LegBlend::kContactM);
+  ASSERT_GT(sole(a, 1), LegBlend::kContactM);
+  ASSERT_GT(sole(b, 0), LegBlend::kContactM);
+  ASSERT_GT(sole(b, 1), LegBlend::kContactM);
+  ASSERT_GT(legs_apart(a), 0.0f);
+  ASSERT_GT(legs_apart(b), 0.0f);
+  ASSERT_LT(legs_apart(angle_blend(a, b, 1.0f / 3.0f)), -0.005f) << "the case must bring the feet together";
+  const LegBlend blend(human_skeleton());
+  for (float t : {1.0f / 3.0f, 0.5f, 2.0f / 3.0f}) {
+    PlayerPose drawn = angle_blend(a, b, t);
+    drawn.heading = a.heading + (b.heading - a.heading) * t;
+    drawn.y = a.y + (b.y - a.y) * t;
+    blend.apply(a, b, t, drawn);
+    EXPECT_GE(legs_apart(drawn), 0.0f) << t;
+  }
 }
 
 TEST(LegBlend, TheTurnOutGrowsFromNothingAtEitherFrame) {

