@@ -192,6 +192,21 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
       // eases out of or into the grass; the blend gives it t of the way.
       const float e = ca ? 1.0f - (1.0f - t) * (1.0f - t) : t * t;
       target.y += (fb.sole - fa.sole) * (e - t);  // >= 0 either way
+      // Across the grass it starts slowly (leaving) or ends slowly
+      // (landing): t -/+ k t (1 - t) of its way (taken kAcrossWayM at
+      // most), as a runner's foot lifts before it swings and is over its
+      // spot before it lands; k no more than the ankle's travel about the
+      // root leaves below kApartTravelM, which the ease adds to.
+      float wx = 0, wz = 0;
+      body.frame.dir_to_body(fb.ankle.x - fa.ankle.x, fb.ankle.z - fa.ankle.z, wx, wz);
+      const float way = std::sqrt(wx * wx + wz * wz);
+      if (way > 1e-4f) {
+        const float taken = std::min(way, kAcrossWayM);
+        const float k = std::min(kAcrossEase, std::max(0.0f, kApartTravelM - travel[i]) / taken);
+        const float shift = (ca ? -k : k) * t * (1.0f - t) * taken / way;
+        target.x += wx * shift;
+        target.z += wz * shift;
+      }
     }
     // Swing the leg about the hip: the rotation taking the ankle's direction
     // from the hip to the target's, no more than kMaxSwingDeg.

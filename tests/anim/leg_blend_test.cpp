@@ -129,12 +129,16 @@ TEST(LegBlend, ALeavingFootRisesAtOnceAndALandingOneComesDownSteeply) {
   // The blend gives the sole a third of its rise, the target 5/9 of it:
   // the ankle goes up towards the difference as far as a swing of the leg
   // about the hip takes it (the leg keeps its length: a leg 25 deg behind
-  // the hip gets about a fifth of the way), and the sole with it.
+  // the hip gets about a fifth of the way), and the sole with it. The
+  // target is also held back across the grass (the next test), which on a
+  // leg behind the hip raises the ankle too: at most that shift's
+  // tan(25 deg) more.
   const float rise = sole(b, 0) - sole(a, 0);
   ASSERT_GT(rise, 0.015f);
   const float want = rise * (5.0f / 9 - 1.0f / 3);
+  const float held_back = LegBlend::kAcrossEase * (2.0f / 9) * LegBlend::kAcrossWayM;
   EXPECT_GT(ankle(lift, 0).y - ankle(blended, 0).y, 0.15f * want);
-  EXPECT_LT(ankle(lift, 0).y - ankle(blended, 0).y, 1.01f * want);
+  EXPECT_LT(ankle(lift, 0).y - ankle(blended, 0).y, 1.01f * want + 0.47f * held_back);
   EXPECT_GT(sole(lift, 0), sole(blended, 0));
   // Landing, the same frames the other way round: it stays up longer.
   PlayerPose land = angle_blend(b, a, 1.0f - t);
@@ -144,6 +148,43 @@ TEST(LegBlend, ALeavingFootRisesAtOnceAndALandingOneComesDownSteeply) {
   // The left foot, in the air in both, keeps the blend.
   for (int k = dof::kLHip; k < dof::kLAnkle + 2; ++k)
     EXPECT_EQ(lift.angles[static_cast<std::size_t>(k)], blended.angles[static_cast<std::size_t>(k)]) << "dof " << k;
+}
+
+TEST(LegBlend, ALeavingFootStartsAcrossTheGrassSlowlyAndALandingOneEndsSlowly) {
+  const LegBlend legs(human_skeleton());
+  // The frames above: the right foot leaves the grass and moves 0.26 m
+  // forward over the frame (about the root it moves 4 cm: the ease is not
+  // bounded by the travel).
+  const PlayerPose a = stance(0.0f, -0.38f, 0.2f, 0.25f);
+  const PlayerPose b = stance(0.3f, -0.42f, 0.1f, 0.22f, 0.15f);
+  const float way = ankle(b, 0).x - ankle(a, 0).x;
+  ASSERT_GT(way, LegBlend::kAcrossWayM);
+  // A third of the way in, the target is behind the blend by k t (1 - t)
+  // of the way taken (kAcrossWayM): 1.7 cm. The swing of at most 1 deg
+  // about the hip, which also lifts the foot, takes the ankle part of it.
+  const float t = 1.0f / 3;
+  const float want = LegBlend::kAcrossEase * t * (1 - t) * LegBlend::kAcrossWayM;
+  const PlayerPose blended = angle_blend(a, b, t);
+  PlayerPose lift = blended;
+  legs.apply(a, b, t, lift);
+  EXPECT_LT(ankle(lift, 0).x - ankle(blended, 0).x, -0.3f * want);
+  EXPECT_GT(ankle(lift, 0).x - ankle(blended, 0).x, -1.01f * want);
+  // Landing (the frames the other way round), two thirds of the way in:
+  // nearer its spot than the blend.
+  const PlayerPose land_blend = angle_blend(b, a, 1.0f - t);
+  PlayerPose land = land_blend;
+  legs.apply(b, a, 1.0f - t, land);
+  EXPECT_LT(ankle(land, 0).x - ankle(land_blend, 0).x, -0.3f * want);
+  // A foot whose ankle travels kApartTravelM or more about the root over
+  // the frame is not eased across the grass (the ease would add to a
+  // pop's travel): b's right ankle 0.5 m further forward about the root.
+  const PlayerPose fast = stance(0.3f, 0.12f, 0.1f, 0.22f, 0.15f);
+  ASSERT_GT(sole(fast, 0), LegBlend::kContactM);
+  ASSERT_GE((ankle(fast, 0).x - fast.x) - (ankle(a, 0).x - a.x), LegBlend::kApartTravelM);
+  const PlayerPose fast_blend = angle_blend(a, fast, t);
+  PlayerPose fast_lift = fast_blend;
+  legs.apply(a, fast, t, fast_lift);
+  EXPECT_GT(ankle(fast_lift, 0).x - ankle(fast_blend, 0).x, -0.3f * want);
 }
 
 // How far apart the legs' boxes are (centre line to centre line, less half

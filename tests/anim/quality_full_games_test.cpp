@@ -239,7 +239,11 @@ constexpr Bounds kAt20Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 
 // them, in four rounds, not two (anim/leg_blend.cpp, 2026-11-29): thighs /
 // shins / feet too close at 60 Hz 10/6/65 and 18/2/52 -> 11/5/30 and
 // 16/3/31, no other figure moved. Bounds: 18/6/65 -> 16/5/31.
-constexpr Bounds kAt60Hz{0.20, 0.8, 0.7, 0.65, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 16, 5, 31, 0, 150, 0.02, 4.5,
+// A leaving or landing foot is eased across the grass too (2026-11-29):
+// the 4-5 m/s bands 0.51/0.51 -> 0.47/0.47, 5-6 m/s 0.55/0.63 ->
+// 0.52/0.58; too close 11/5/30 and 16/3/31 -> 11/6/33 and 13/3/30.
+// Bounds: worst band up to 8 m/s 0.65 -> 0.6, 16/5/31 -> 13/6/33.
+constexpr Bounds kAt60Hz{0.20, 0.8, 0.7, 0.6, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 13, 6, 33, 0, 150, 0.02, 4.5,
                          -0.02, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {

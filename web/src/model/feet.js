@@ -9,7 +9,8 @@
 //     on the straight line between its places in the two frames;
 //   - a foot on the grass in one frame only is raised: its sole's height
 //     eases out of the grass (1 - (1 - t)^2 of the way) or into it (t^2)
-//     instead of following t.
+//     instead of following t, and across the grass it starts (leaving) or
+//     ends (landing) slowly: t -/+ ACROSS_EASE t (1 - t) of its way.
 // Either is done by swinging the whole leg about its hip (the thigh's three
 // angles; knee and ankle keep theirs) by at most 1 degree: enough for what
 // the blend gets wrong, too little to jerk a leg.
@@ -30,6 +31,8 @@ import { axisRotation } from './ground.js';
 export const CONTACT_M = 0.03;       // a sole this low is on the grass
 export const SAME_STANCE_M = 0.3;    // both frames on it and this close: one stance
 export const MAX_SWING_DEG = 1;      // the largest swing of a leg about its hip
+export const ACROSS_EASE = 0.5;      // a leaving / landing foot crosses t -/+ this * t(1 - t) of its way
+export const ACROSS_WAY_M = 0.15;    // that way taken this far at most
 export const APART_M = 0.01;         // legs' centre lines apart beyond half the wider box
 export const MAX_APART_DEG = 8;      // the largest turn of a leg out of the other's way
 export const APART_SPEED_DEG = 54;   // turns out only below this thigh turn per frame
@@ -233,6 +236,19 @@ export function keepFeetOfPlayer(skel, pa, pb, t, o) {
     } else {
       const e = ca ? 1 - (1 - t) * (1 - t) : t * t;
       target[1] += (fb.sole - fa.sole) * (e - t);   // >= 0 leaving or landing
+      // Across the grass it starts (leaving) or ends (landing) slowly; the
+      // ease adds to the ankle's travel, so it stays below APART_TRAVEL_M.
+      const dx = fb.ankle[0] - fa.ankle[0], dy = fb.ankle[2] - fa.ankle[2];
+      const c = Math.cos(o.heading * DEG), s = Math.sin(o.heading * DEG);
+      const wx = dx * c + dy * s, wz = -dx * s + dy * c;
+      const way = Math.hypot(wx, wz);
+      if (way > 1e-4) {
+        const taken = Math.min(way, ACROSS_WAY_M);
+        const k = Math.min(ACROSS_EASE, Math.max(0, APART_TRAVEL_M - travel) / taken);
+        const shift = (ca ? -k : k) * t * (1 - t) * taken / way;
+        target[0] += wx * shift;
+        target[2] += wz * shift;
+      }
     }
     // The swing: the rotation taking hip->ankle's direction to hip->target's.
     const ux = ankle[0] - hip[0], uy = ankle[1] - hip[1], uz = ankle[2] - hip[2];
