@@ -324,8 +324,9 @@ void LegBlend::keep_apart(const bool in_air[2], float room[2], float along[2], P
     // other front to back as well as side to side, and moved out from the
     // other hip one may slide along the other or even towards it (a real
     // case: LegBlend.FeetThatMeetInTheBlendPartAlongTheLineBetweenThem).
-    // On the two full games, feet drawn too close at 60 Hz in four rounds:
-    // 46 and 39 player-frames moving out, 30 and 31 along that line.
+    // On the two full games, feet drawn too close at 60 Hz in four rounds
+    // (before the ease across the grass above): 46 and 39 player-frames
+    // moving out, 30 and 31 along that line.
     const glm::vec3 hip[2] = {glm::vec3(thigh[0][3]), glm::vec3(thigh[1][3])};
     const glm::vec3 gap = closest.on_first - closest.on_second;
     const bool between_feet = feet && glm::length(gap) >= 1e-3f;
