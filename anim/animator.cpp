@@ -28,7 +28,7 @@ Animator::Animator(const SkeletonDef& skeleton, const GameParams& params, AnimCo
     : skeleton_(skeleton), params_(params),
       k_{params.simulator_step_ms(), params.ball_size(), params.server.number("tackle_cycles", 10),
          params.server.number("stamina_max", 8000)},
-      config_(config), grid_(skeleton), players_(std::make_unique<std::array<PlayerAnim, kMaxPlayers>>()) {
+      config_(config), grid_(skeleton), drawn_legs_(skeleton), players_(std::make_unique<std::array<PlayerAnim, kMaxPlayers>>()) {
   config_.lookahead_cycles = std::clamp(config_.lookahead_cycles, 1, 50);
   config_.heading_half_window = std::clamp(config_.heading_half_window, 0, 10);
   // Past cycles needed: heading window, and the raw decision of the previous
@@ -380,6 +380,7 @@ void Animator::emit_cycle(std::uint64_t pos, std::vector<PoseFrame>& out, std::v
       if (sample.weight > 0) in.layer = &sample;
       in.source = config_.motion_source.get();
       in.grid = &grid_;
+      in.drawn_legs = &drawn_legs_;
       // The path ahead, frame by frame, as far as the look-ahead reaches and
       // not across a teleport.
       {

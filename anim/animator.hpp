@@ -36,6 +36,7 @@
 #include "anim/anim_config.hpp"
 #include "anim/anim_events.hpp"
 #include "anim/classifier.hpp"
+#include "anim/leg_blend.hpp"
 #include "proto/game_params.hpp"
 #include "proto/pose_frame.hpp"
 #include "proto/quantizer.hpp"
@@ -104,6 +105,7 @@ class Animator {
   } k_;
   AnimConfig config_;
   proto::Quantizer grid_;         // the stream's: frames leave on it (grid_rounding.hpp)
+  LegBlend drawn_legs_;           // the clients' step between frames (drawn_leg_clearance.hpp)
   std::vector<WorldState> ring_;  // the last ring_.size() states, by stream position
   // raw_action's last answer per ring slot and player, and what it was made from.
   struct RawDecision {

@@ -273,6 +273,59 @@ void LegBlend::turn_thigh(const Leg& leg, const glm::mat4& pelvis, const glm::ma
   }
 }
 
+LegBlend::Nearest LegBlend::nearest(const glm::mat4 thigh[2], const glm::mat4 shin[2], const glm::mat4 foot[2]) const {
+  Nearest n;
+  const std::pair<const Joint Leg::*, const glm::mat4*> pairs[] = {
+      {&Leg::thigh, thigh}, {&Leg::shin, shin}, {&Leg::foot, foot}};
+  for (const auto& [member, model] : pairs) {
+    const Joint& j0 = leg_[0].*member;
+    const Joint& j1 = leg_[1].*member;
+    if (!j0.box || !j1.box) continue;
+    const ClosestPoints c = closest_points(glm::vec3(model[0] * glm::vec4(j0.line_from, 1.0f)),
+                                           glm::vec3(model[0] * glm::vec4(j0.line_to, 1.0f)),
+                                           glm::vec3(model[1] * glm::vec4(j1.line_from, 1.0f)),
+                                           glm::vec3(model[1] * glm::vec4(j1.line_to, 1.0f)));
+    const float clear = c.distance - std::max(j0.half_width, j1.half_width);
+    if (clear < n.clearance) {
+      n.clearance = clear;
+      n.feet = member == &Leg::foot;
+      n.closest = c;
+    }
+  }
+  return n;
+}
+
+glm::vec3 LegBlend::ankle(const PlayerPose& p, int i, float* sole) const {
+  if (!ready()) {
+    if (sole != nullptr) *sole = p.z;
+    return glm::vec3(p.x, p.z, p.y);
+  }
+  const auto& joints = skeleton_.joints;
+  const Leg& leg = leg_[static_cast<std::size_t>(i & 1)];
+  const float* q = p.angles.data();
+  const glm::mat4 m = root_model_of(joints[0], q, p.z) * local_model(joints, leg.thigh.index, leg.thigh.first_angle, q) *
+                      local_model(joints, leg.shin.index, leg.shin.first_angle, q) *
+                      local_model(joints, leg.foot.index, leg.foot.first_angle, q);
+  if (sole != nullptr) *sole = sole_height(joints[static_cast<std::size_t>(leg.foot.index)].segment, m);
+  return FieldOf{BodyFrame(p.x, p.y, p.heading)}.point(glm::vec3(m[3]));
+}
+
+float LegBlend::clearance(const PlayerPose& o) const {
+  if (!ready()) return INFINITY;
+  const auto& joints = skeleton_.joints;
+  const float* q = o.angles.data();
+  auto local = [&](const Joint& j) { return local_model(joints, j.index, j.first_angle, q); };
+  // Both legs hang from the root joint, so how far apart they are does not
+  // depend on the root's rotation or place: they are posed in its space.
+  glm::mat4 thigh[2], shin[2], foot[2];
+  for (std::size_t i = 0; i < 2; ++i) {
+    thigh[i] = local(leg_[i].thigh);
+    shin[i] = thigh[i] * local(leg_[i].shin);
+    foot[i] = shin[i] * local(leg_[i].foot);
+  }
+  return nearest(thigh, shin, foot).clearance;
+}
+
 void LegBlend::keep_apart(const bool in_air[2], float room[2], float along[2], PlayerPose& o) const {
   const auto& joints = skeleton_.joints;
   float* q = o.angles.data();
@@ -295,27 +348,10 @@ void LegBlend::keep_apart(const bool in_air[2], float room[2], float along[2], P
     }
     const float shares = share[0] + share[1];
     if (shares <= 0.0f) return;
-    // The pair of boxes furthest inside their distance.
-    float shortfall = 0;
-    bool feet = false;
-    ClosestPoints closest;
-    const std::pair<const Joint Leg::*, const glm::mat4*> pairs[] = {
-        {&Leg::thigh, thigh}, {&Leg::shin, shin}, {&Leg::foot, foot}};
-    for (const auto& [member, model] : pairs) {
-      const Joint& j0 = leg_[0].*member;
-      const Joint& j1 = leg_[1].*member;
-      if (!j0.box || !j1.box) continue;
-      const ClosestPoints c = closest_points(glm::vec3(model[0] * glm::vec4(j0.line_from, 1.0f)),
-                                             glm::vec3(model[0] * glm::vec4(j0.line_to, 1.0f)),
-                                             glm::vec3(model[1] * glm::vec4(j1.line_from, 1.0f)),
-                                             glm::vec3(model[1] * glm::vec4(j1.line_to, 1.0f)));
-      const float need = kApartM + std::max(j0.half_width, j1.half_width) - c.distance;
-      if (need > shortfall) {
-        shortfall = need;
-        feet = member == &Leg::foot;
-        closest = c;
-      }
-    }
+    const Nearest near = nearest(thigh, shin, foot);
+    const float shortfall = kApartM - near.clearance;
+    const bool feet = near.feet;
+    const ClosestPoints& closest = near.closest;
     if (shortfall <= 0.0f) return;
     // Each leg in the air turns at the hip by its share of the shortfall:
     // the angle that moves its nearest point that far away from the other

@@ -42,11 +42,13 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "anim/segment_distance.hpp"
 #include "proto/pose_frame.hpp"
 #include "proto/skeleton.hpp"
 
@@ -67,6 +69,18 @@ class LegBlend {
 
   // One player: `o` is the blend of `pa` and `pb` at `t`.
   void apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o) const;
+
+  // How far apart the legs' boxes are in pose `o`: the least distance
+  // between the centre lines of the two thighs, the two shins and the two
+  // feet, less half the wider box's width (m; anim-quality's clearance,
+  // < 0 too close). INFINITY without legs.
+  float clearance(const PlayerPose& o) const;
+
+  // Where pose `p` puts leg `i`'s ankle (0 and 1 in the order found; the
+  // human skeleton's right, then left): field space written as (x, height,
+  // y), as anim-quality measures an ankle's travel. With `sole`, also the
+  // height of its foot box's lowest corner (m).
+  glm::vec3 ankle(const PlayerPose& p, int i, float* sole = nullptr) const;
 
   // A foot is on the grass when its box's lowest corner is this low (m; the
   // height at which a viewer sees it touch, and anim-quality's contact).
@@ -119,6 +133,15 @@ class LegBlend {
     Joint thigh, shin, foot;
   };
 
+  // The pair of boxes (thighs, shins or feet) least clear of each other in
+  // the posed legs: its clearance (as clearance() above), whether it is
+  // the feet, and its centre lines' nearest points.
+  struct Nearest {
+    float clearance = INFINITY;
+    bool feet = false;
+    ClosestPoints closest;
+  };
+  Nearest nearest(const glm::mat4 thigh[2], const glm::mat4 shin[2], const glm::mat4 foot[2]) const;
   // Turns a leg's thigh by `rotation` (body space, about the hip joint);
   // `pelvis` and `thigh` are the root's and the thigh's model transforms.
   void turn_thigh(const Leg& leg, const glm::mat4& pelvis, const glm::mat4& thigh, const glm::mat3& rotation,

@@ -16,9 +16,6 @@ namespace mc::anim {
 namespace {
 
 const std::string kYzx = "yzx", kZxy = "zxy", kZ = "z", kZx = "zx";
-// How far past the legs' joint speed limit a hip may turn to keep the legs
-// apart after that limit (deg; separate_legs_again).
-constexpr float kSeparateAgainDeg = 8.0f;
 // Halvings of a turn-out too fast in full: to 1/64 of it (at most 0.4 deg
 // of a turn-out of at most 25 deg).
 constexpr int kTurnOutBisections = 6;
@@ -234,29 +231,30 @@ bool separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]) {
   return planted[0] || planted[1];
 }
 
+int hip_turning_too_fast(std::span<const float> last, std::span<const float> a, float most_deg, int only) {
+  for (int side = 0; side < 2; ++side) {
+    if (only >= 0 && side != only) continue;
+    const auto k = static_cast<std::size_t>(side == 0 ? dof::kRHip : dof::kLHip);
+    bool fast = rotation_between(kZxy, &last[k], &a[k]) > most_deg;
+    // Nor a third of the frame as the clients blend it (their angles
+    // linearly at 60 Hz): a blend of Euler angles turns unevenly, and one
+    // hip's last third turned 20.3 deg (60.9 deg per 50 ms) when the leg
+    // further across turned out.
+    float at[4][3];
+    for (int n = 0; n < 4; ++n)
+      for (std::size_t d = 0; d < 3; ++d)
+        at[n][d] = last[k + d] + (a[k + d] - last[k + d]) * static_cast<float>(n) / 3.0f;
+    for (int n = 0; n < 3 && !fast; ++n) fast = rotation_between(kZxy, at[n], at[n + 1]) > most_deg / 3.0f;
+    if (fast) return side;
+  }
+  return -1;
+}
+
 void separate_legs_again(const SkeletonDef& skel, const BodyFrame& body, float pelvis_h, std::span<const float> last,
                          const AnkleTravel* travel, const bool planted[2], std::span<float> a) {
   std::array<float, dof::kCount> held;
   std::copy_n(a.begin(), dof::kCount, held.begin());
-  // The hip that turns too fast from `last` to `a` (0 right, 1 left), or -1.
-  auto hip_too_fast = [&] {
-    for (int side = 0; side < 2; ++side) {
-      const auto k = static_cast<std::size_t>(side == 0 ? dof::kRHip : dof::kLHip);
-      constexpr float kMostDeg = kMaxLegStepDeg + kSeparateAgainDeg;
-      bool fast = rotation_between(kZxy, &last[k], &a[k]) > kMostDeg;
-      // Nor a third of the frame as the clients blend it (their angles
-      // linearly at 60 Hz): a blend of Euler angles turns unevenly, and
-      // one hip's last third turned 20.3 deg (60.9 deg per 50 ms) when
-      // the leg further across turned out.
-      float at[4][3];
-      for (int n = 0; n < 4; ++n)
-        for (std::size_t d = 0; d < 3; ++d)
-          at[n][d] = last[k + d] + (a[k + d] - last[k + d]) * static_cast<float>(n) / 3.0f;
-      for (int n = 0; n < 3 && !fast; ++n) fast = rotation_between(kZxy, at[n], at[n + 1]) > kMostDeg / 3.0f;
-      if (fast) return side;
-    }
-    return -1;
-  };
+  auto hip_too_fast = [&] { return hip_turning_too_fast(last, a, kMaxLegStepDeg + kSeparateAgainDeg); };
   // One try with the legs in `fixed` held. A turn-out too fast in full is
   // taken as far as it keeps within the limits (bisection): refused whole,
   // it left a crossover step's shins 3.8 cm inside each other (game 2 seq

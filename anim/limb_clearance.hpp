@@ -41,6 +41,15 @@ void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::spa
 // joint's height (m).
 bool separate_legs(std::span<float> a, float pelvis_h, const bool planted[2]);
 
+// How far past the legs' joint speed limit a hip may turn to keep the legs
+// apart after that limit (deg; separate_legs_again, keep_legs_apart_drawn).
+inline constexpr float kSeparateAgainDeg = 8.0f;
+
+// The hip (0 right, 1 left) that turns more than `most_deg` from `last` to
+// `a`, or more than a third of it in a third of the clients' blend; -1
+// when neither does. With `only` >= 0, that hip alone is checked.
+int hip_turning_too_fast(std::span<const float> last, std::span<const float> a, float most_deg, int only = -1);
+
 // Legs brought together again after separate_legs (by the joint speed
 // limit, or by a whole-body action's leg pose blended over them): a leg in
 // the air is turned out of the other leg's way once more, as long as each

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "anim/body_frame.hpp"
+#include "anim/drawn_leg_clearance.hpp"
 #include "anim/grid_rounding.hpp"
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
@@ -43,6 +44,9 @@ constexpr float kSupportReanchorM = 0.4f;
 // leg back (below). On the two full games 3, 4 and 8 all left them apart;
 // each pair costs a separation and a check, on a few hundred frames a game.
 constexpr int kDrawnRetries = 4;
+// How many times the legs are kept apart as the clients draw the frame,
+// each followed by resting on the grass again.
+constexpr int kDrawnApartTries = 5;
 
 // Highest pelvis at which the ankle of `t` (body space) stays within reach of
 // its hip, for a pelvis rotated by `pelvis` (pelvis joint on the body's Y axis).
@@ -534,6 +538,17 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       rest_on_grass(8.0f);
     }
   }
+  // Nor do the legs pass through each other as the clients draw the frame
+  // (drawn_leg_clearance.hpp). Resting on the grass again may level a
+  // foot in the air into the other one: then the step runs again.
+  if (in.drawn_legs != nullptr && !in.reset && ctx.ankles.valid && rested && own_feet && !contact) {
+    for (int k = 0; k < kDrawnApartTries; ++k) {
+      if (!keep_legs_apart_drawn(*in.drawn_legs, limits_from, in.grid, ctx.last_sent, ctx.last_angles,
+                                 DrawnRoot{px, py, pelvis_h, heading}, lo.planted, a))
+        break;
+      rest_on_grass(8.0f);
+    }
+  }
   for (int i = 0; i < 2; ++i)  // every touch-down counts for the mocap walk's cadence guard
     if (lo.planted[i] && !ctx.last_planted[i]) ctx.walk_since_land[i] = 0;
   ctx.last_planted[0] = lo.planted[0];
@@ -572,6 +587,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // the animation goes on from, ctx's, stay unrounded).
   if (in.grid != nullptr && rested)
     round_legs_to_grid(*in.grid, limits_from, m.data(), out, contact ? act->kick_foot : -1);
+  ctx.last_sent = out;
 }
 
 }  // namespace mc::anim

@@ -26,6 +26,7 @@
 #include "anim/anim_events.hpp"
 #include "anim/classifier.hpp"
 #include "anim/footsteps.hpp"
+#include "anim/leg_blend.hpp"
 #include "anim/motion_source.hpp"
 #include "proto/pose_frame.hpp"
 #include "proto/skeleton.hpp"
@@ -49,6 +50,7 @@ struct PlayerAnim {
   bool was_in_action = false;
   bool last_planted[2] = {false, false};
   AnkleTravel ankles;  // last frame's ankles and pelvis (ankle_travel.hpp)
+  PlayerPose last_sent;  // last frame as it left (drawn_leg_clearance.hpp)
   // The action playing or about to play (kick_planner.hpp), and its bookkeeping.
   ActionMotion motion;
   bool motion_active = false;
@@ -106,6 +108,10 @@ struct PlayerFrameInput {
   // The stream's grid: the pose leaves on it, rounded so that its ankles stay
   // put (grid_rounding.hpp); null leaves it unrounded.
   const proto::Quantizer* grid = nullptr;
+  // The clients' step between frames (proto/SPEC.md 4.7 step 2): with it,
+  // the legs are kept apart as the clients draw the frame from the last
+  // one (drawn_leg_clearance.hpp); null leaves that unchecked.
+  const LegBlend* drawn_legs = nullptr;
   // The root at the following frames (field m), as far as the look-ahead
   // knows them: where the feet will have to be.
   float ahead_x[kPathAhead] = {}, ahead_y[kPathAhead] = {};

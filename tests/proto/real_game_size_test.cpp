@@ -27,7 +27,9 @@
 // 3,232,598 B; game 2 3,190,787 -> 3,210,099). Then to 3.240 MB: a
 // sprinter's foot on the grass for two frames, not one (anim/footsteps.cpp;
 // the 9+ m/s band's grounded foot at 60 Hz 3.9 -> 0.6 m/s), 0.13 %
-// (3,236,762 B; game 2 3,216,463).
+// (3,236,762 B; game 2 3,216,463). Legs turned apart where the clients'
+// blend brings them through each other (anim/drawn_leg_clearance.hpp)
+// added 77 B within it (3,236,839 B; game 2 3,216,534).
 #include <gtest/gtest.h>
 
 #include <cstdio>
