@@ -59,12 +59,13 @@ TEST(KeepLegsApartDrawn, LegsThatPassThroughEachOtherInTheBlendAreTurnedApartAtT
   ASSERT_GT(c.legs.clearance(pose(c.a)), kDrawnApartM);
   ASSERT_LT(c.drawn(), 0.0f);
   const auto before = c.a;
-  const bool left_planted[2] = {false, true};
-  EXPECT_TRUE(keep_legs_apart_drawn(c.legs, human_skeleton(), nullptr, c.last, c.last_angles, c.now, left_planted, c.a));
+  // The right foot on the grass (its leg is the one tried first when free).
+  const bool right_planted[2] = {true, false};
+  EXPECT_TRUE(keep_legs_apart_drawn(c.legs, human_skeleton(), nullptr, c.last, c.last_angles, c.now, right_planted, c.a));
   EXPECT_GE(c.drawn(), kDrawnApartM);
-  // Only the right hip turned; the planted left leg and the rest stayed.
+  // Only the left hip turned; the planted right leg and the rest stayed.
   for (int d = 0; d < dof::kCount; ++d) {
-    if (d >= dof::kRHip && d < dof::kRHip + 3) continue;
+    if (d >= dof::kLHip && d < dof::kLHip + 3) continue;
     EXPECT_EQ(c.a[static_cast<std::size_t>(d)], before[static_cast<std::size_t>(d)]) << d;
   }
   // Within the speed limit the animator keeps legs apart by.
