@@ -72,7 +72,7 @@ TEST(KeepLegsApartDrawn, LegsThatPassThroughEachOtherInTheBlendAreTurnedApartAtT
   EXPECT_LT(hip_turning_too_fast(c.last_angles, c.a, kMaxLegStepDeg + kSeparateAgainDeg), 0);
 }
 
-TEST(KeepLegsApartDrawn, WithBothFeetUpEitherLegMayTurn) {
+TEST(KeepLegsApartDrawn, WithBothFeetUpTheBlendIsClearedToo) {
   Case c;
   const bool in_air[2] = {false, false};
   EXPECT_TRUE(keep_legs_apart_drawn(c.legs, human_skeleton(), nullptr, c.last, c.last_angles, c.now, in_air, c.a));
