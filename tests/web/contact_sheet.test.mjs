@@ -129,18 +129,46 @@ describe('the page draws the close-up contact sheet', { timeout: 600000 }, () =>
     }
     assert.deepEqual(errors, []);
 
-    // The sheet: one row per moment, 20 cells, drawn by the same browser.
-    const sheet = await browser.newPage({ viewport: { width: CELLS * CELL_W, height: cells.length * (CELL_H + 18) } });
-    const html = cells.map(({ row, shots }) =>
-      `<div class="l">${row.name} from seq ${row.seq}, ${row.side > 0 ? 'left' : 'right'} ${row.unum}` +
-      `${row.name === 'kick' ? ', contact in cell 10' : ''}</div><div class="r">` +
-      shots.map((s, i) => `<img src="${s}" title="${row.seq + i}">`).join('') + '</div>').join('');
-    await sheet.setContent(`<style>body{margin:0;font:12px sans-serif;background:#fff}` +
-      `.l{height:18px;line-height:18px;padding-left:4px}.r{display:flex}` +
-      `img{width:${CELL_W}px;height:${CELL_H}px;display:block}</style>${html}`);
-    await sheet.waitForFunction(() => [...document.images].every((i) => i.complete && i.naturalWidth > 0));
+    // The sheet: one row per moment, 20 cells, put together on a 2D canvas in
+    // a blank page and read back as a PNG. Not a full-page screenshot: a
+    // 4800 px wide capture is what failed in CI ("Unable to capture
+    // screenshot"), while a canvas read-back does not go through the
+    // compositor at all.
+    const LABEL_H = 18;
+    const sheet = await browser.newPage();
+    const labels = cells.map(({ row }) => `${row.name} from seq ${row.seq}, ${row.side > 0 ? 'left' : 'right'} ${row.unum}` +
+      `${row.name === 'kick' ? ', contact in cell 10' : ''}`);
+    const dataUrl = await sheet.evaluate(async ({ rowsOfShots, labels, W, H, L }) => {
+      const canvas = document.createElement('canvas');
+      canvas.width = Math.max(...rowsOfShots.map((r) => r.length)) * W;
+      canvas.height = rowsOfShots.length * (H + L);
+      const g = canvas.getContext('2d');
+      g.fillStyle = '#fff';
+      g.fillRect(0, 0, canvas.width, canvas.height);
+      g.font = '12px sans-serif';
+      g.textBaseline = 'middle';
+      for (let r = 0; r < rowsOfShots.length; r++) {
+        const top = r * (H + L);
+        g.fillStyle = '#000';
+        g.fillText(labels[r], 4, top + L / 2);
+        for (let i = 0; i < rowsOfShots[r].length; i++) {
+          const img = new Image();
+          img.src = rowsOfShots[r][i];
+          await img.decode();
+          g.drawImage(img, i * W, top + L, W, H);
+        }
+      }
+      return canvas.toDataURL('image/png');
+    }, { rowsOfShots: cells.map((c) => c.shots), labels, W: CELL_W, H: CELL_H, L: LABEL_H });
+    await sheet.close();
+    const prefix = 'data:image/png;base64,';
+    assert.ok(dataUrl.startsWith(prefix), `the sheet canvas read back as a PNG: ${dataUrl.slice(0, 40)}`);
+    const sheetPng = Buffer.from(dataUrl.slice(prefix.length), 'base64');
+    // A PNG's IHDR holds its size: the sheet is every cell, not a blank or cut picture.
+    assert.equal(sheetPng.readUInt32BE(16), CELLS * CELL_W, 'sheet width');
+    assert.equal(sheetPng.readUInt32BE(20), cells.length * (CELL_H + LABEL_H), 'sheet height');
     const file = path.join(SHEET_DIR, 'contact-sheet-page.png');
-    writeFileSync(file, await sheet.screenshot({ type: 'png', fullPage: true }));
+    writeFileSync(file, sheetPng);
     console.log(`contact sheet drawn by the page: ${file} (${rows.map((r) => `${r.name} from seq ${r.seq}`).join('; ')})`);
   });
 });
