@@ -18,6 +18,12 @@ int axis_index(char a) { return a == 'x' ? 0 : a == 'y' ? 1 : a == 'z' ? 2 : -1;
 
 constexpr float kDegToRad = 0.017453292519943295f;
 
+// Four floats that the compiler treats as one vector (GCC's and Clang's
+// vector extension; wasm and any target without vectors get the same
+// arithmetic lane by lane): a column of a joint's rotation or transform.
+typedef float Column __attribute__((vector_size(16)));
+static_assert(sizeof(Column) == sizeof(glm::vec4));
+
 }  // namespace
 
 // sin and cos of one joint angle (degrees), remembered. One frame of one
@@ -54,14 +60,18 @@ void sincos_deg(float deg, float& s, float& c) { remembered_sincos(deg, s, c); }
 namespace {
 
 // r * R_axis(angle) for each dof in turn, column by column: an elementary
-// rotation mixes two columns of r and keeps the third. The columns are
-// named, not indexed, so they stay in registers (this is the hottest loop
-// of the animation). `sc(i, s, c)` gives dof i's sine and cosine.
+// rotation mixes two columns of r and keeps the third. This is the hottest
+// loop of the animation, so the columns are named, not indexed (they stay
+// in registers), and are vectors of four floats (the fourth 0, GCC's and
+// Clang's vector extension) so that a column is mixed in one vector
+// operation. Each lane is the same product and sum as glm's, so the
+// rotation is bit for bit the same. `sc(i, s, c)` gives dof i's sine and
+// cosine.
 template <typename SinCos>
 glm::mat3 rotation_of(const std::string& dofs, SinCos sc) {
-  glm::vec3 c0(1, 0, 0), c1(0, 1, 0), c2(0, 0, 1);
-  auto mix = [](glm::vec3& p, glm::vec3& q, float s, float c) {
-    const glm::vec3 cp = p, cq = q;
+  Column c0 = {1, 0, 0, 0}, c1 = {0, 1, 0, 0}, c2 = {0, 0, 1, 0};
+  auto mix = [](Column& p, Column& q, float s, float c) {
+    const Column cp = p, cq = q;
     p = c * cp + s * cq;
     q = c * cq - s * cp;
   };
@@ -73,7 +83,7 @@ glm::mat3 rotation_of(const std::string& dofs, SinCos sc) {
     else if (axes[i] == 'y') mix(c2, c0, s, c);
     else mix(c0, c1, s, c);
   }
-  return glm::mat3(c0, c1, c2);
+  return glm::mat3(c0[0], c0[1], c0[2], c1[0], c1[1], c1[2], c2[0], c2[1], c2[2]);
 }
 
 }  // namespace
@@ -153,12 +163,24 @@ bool LocalToModelJob::Run() const {
     }
     // parent * [r | t], with the parent's and local's last rows (0 0 0 1)
     // not multiplied out: the same sums, in the same order, as glm's mat4
-    // product, without its terms that are known to be zero.
+    // product, without its terms that are known to be zero. A column of
+    // four floats in one vector operation, as in rotation_of; the last row
+    // is then set to what it is.
     const glm::mat4& p = models[static_cast<std::size_t>(j.parent)];
-    const glm::vec3 p0(p[0]), p1(p[1]), p2(p[2]), p3(p[3]);
+    Column p0, p1, p2, p3;
+    std::memcpy(&p0, &p[0], sizeof p0);
+    std::memcpy(&p1, &p[1], sizeof p1);
+    std::memcpy(&p2, &p[2], sizeof p2);
+    std::memcpy(&p3, &p[3], sizeof p3);
     glm::mat4& out = models[i];
-    for (int c = 0; c < 3; ++c) out[c] = glm::vec4(p0 * r[c][0] + p1 * r[c][1] + p2 * r[c][2], 0.0f);
-    out[3] = glm::vec4(p0 * t[0] + p1 * t[1] + p2 * t[2] + p3, 1.0f);
+    for (int c = 0; c < 3; ++c) {
+      Column col = p0 * r[c][0] + p1 * r[c][1] + p2 * r[c][2];
+      col[3] = 0.0f;
+      std::memcpy(&out[c], &col, sizeof col);
+    }
+    Column col = p0 * t[0] + p1 * t[1] + p2 * t[2] + p3;
+    col[3] = 1.0f;
+    std::memcpy(&out[3], &col, sizeof col);
   }
   return true;
 }
