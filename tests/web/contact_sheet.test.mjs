@@ -45,6 +45,22 @@ function parseRows(line) {
   return rows;
 }
 
+// A clip of the page's picture. Headless Chromium's compositor now and then
+// answers a capture with "Unable to capture screenshot" (stop 44's CI, on a
+// 4800 px page); that is the harness, not the page, so a cell is asked for
+// again, twice at most, a frame later.
+async function shoot(page, clip) {
+  for (let attempt = 1; ; attempt++) {
+    try {
+      return await page.screenshot({ type: 'png', clip });
+    } catch (e) {
+      if (attempt >= 3 || !/Unable to capture screenshot/.test(String(e?.message))) throw e;
+      console.log(`screenshot attempt ${attempt} failed (${e.message.split('\n')[0]}); again`);
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+    }
+  }
+}
+
 describe('the page draws the close-up contact sheet', { timeout: 600000 }, () => {
   let server, browser, page, errors = [], rows = [];
 
@@ -118,7 +134,7 @@ describe('the page draws the close-up contact sheet', { timeout: 600000 }, () =>
           y: Math.max(0, Math.min(VIEW_PX - CELL_H, Math.round(at.y - CELL_H * 0.3))),
           width: CELL_W, height: CELL_H,
         };
-        const png = await page.screenshot({ type: 'png', clip });
+        const png = await shoot(page, clip);
         if (last && !png.equals(last)) moved++;
         last = png;
         shots.push(`data:image/png;base64,${png.toString('base64')}`);
