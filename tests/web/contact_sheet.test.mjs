@@ -180,7 +180,7 @@ describe('the page draws the close-up contact sheet', { timeout: 600000 }, () =>
     const prefix = 'data:image/png;base64,';
     assert.ok(dataUrl.startsWith(prefix), `the sheet canvas read back as a PNG: ${dataUrl.slice(0, 40)}`);
     const sheetPng = Buffer.from(dataUrl.slice(prefix.length), 'base64');
-    // A PNG's IHDR holds its size: the sheet is every cell, not a blank or cut picture.
+    // A PNG's IHDR holds its size: room for every cell (a sheet cut short fails).
     assert.equal(sheetPng.readUInt32BE(16), CELLS * CELL_W, 'sheet width');
     assert.equal(sheetPng.readUInt32BE(20), cells.length * (CELL_H + LABEL_H), 'sheet height');
     const file = path.join(SHEET_DIR, 'contact-sheet-page.png');
