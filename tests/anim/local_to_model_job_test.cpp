@@ -51,6 +51,34 @@ TEST(LocalToModelJob, ComposesRotationsInDofOrder) {
   EXPECT_NEAR(x.y, 1.0f, 1e-5f);
 }
 
+// Run works on four-float columns and leaves out the terms of the product
+// known to be zero: every model transform must still be exactly glm's
+// parent * local, with the last row 0 0 0 1, over many random poses.
+TEST(LocalToModelJob, EachTransformIsExactlyTheParentTimesTheLocal) {
+  const SkeletonDef& s = human_skeleton();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> any(-120.0f, 120.0f);
+  std::array<float, kMaxDof> angles{};
+  std::vector<glm::mat4> m(s.joints.size());
+  const glm::vec3 root(0.3f, 0.95f, -0.2f);
+  for (int pose = 0; pose < 200; ++pose) {
+    for (float& a : angles) a = any(rng);
+    ASSERT_TRUE((LocalToModelJob{&s, angles, root, m}.Run()));
+    const float* a = angles.data();
+    for (std::size_t i = 0; i < s.joints.size(); ++i) {
+      const JointDef& j = s.joints[i];
+      glm::mat4 local(joint_rotation(j.dofs, a));
+      a += j.dofs.size();
+      local[3] = glm::vec4(j.offset_ls[0], j.offset_ls[1], j.offset_ls[2], 1.0f);
+      if (j.parent < 0) local[3] += glm::vec4(root, 0.0f);
+      const glm::mat4 want = j.parent < 0 ? local : m[static_cast<std::size_t>(j.parent)] * local;
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+          ASSERT_EQ(m[i][c][r], want[c][r]) << "pose " << pose << " joint " << j.name << " [" << c << "][" << r << "]";
+    }
+  }
+}
+
 // joint_rotation keeps each angle's sine and cosine in a small table:
 // thousands of different angles (colliding in it), each asked twice, must
 // all give the rotation built independently, never another angle's.
