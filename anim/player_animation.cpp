@@ -304,6 +304,9 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   legs.feet[0] = feet[0];
   legs.feet[1] = feet[1];
   legs.angles = a;
+  // The root's travel since the last frame (field m): how far a foot in the
+  // air may travel with the body (swing_clear).
+  const float root_step = ctx.ankles.valid ? pm::hypot(in.x - ctx.ankles.pelvis.x, in.y - ctx.ankles.pelvis.y) : 0.0f;
   // A foot in the air keeps off the grass as it travels (swing_clearance.hpp):
   // not a kick's foot, nor under a whole-body action.
   if (own_feet && !in.reset && ctx.ankles.valid && (act == nullptr || !act->whole_body || w <= 0))
@@ -312,8 +315,9 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       FootTarget& t = legs.feet[i];
       float fx, fy;
       body.to_field(t.ankle_ms[0], t.ankle_ms[2], fx, fy);
-      if (may_skim(t.ankle_ms[1], pm::hypot(fx - ctx.ankles.ankle[i].x, fy - ctx.ankles.ankle[i].y)))
-        t.ankle_ms[1] += swing_lift(t.ankle_ms[1], t.pitch_deg);
+      const float travel = pm::hypot(fx - ctx.ankles.ankle[i].x, fy - ctx.ankles.ankle[i].y);
+      const float clear = swing_clear(travel, root_step);
+      if (may_skim(t.ankle_ms[1], travel, clear)) t.ankle_ms[1] += swing_lift(t.ankle_ms[1], t.pitch_deg, clear);
     }
   legs.Run();
   // An ankle that cannot bend as far as a flat planted sole needs: the heel rises.
@@ -428,7 +432,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
         const float last = ctx.last_angles[static_cast<std::size_t>(d)];
         const float now = a[static_cast<std::size_t>(d)];
         // A foot in the air that travels turns towards level until its sole
-        // is kSwingClearM up, kSkimLevelDeg past its pitch at most: the
+        // is swing_clear() up, kSkimLevelDeg past its pitch at most: the
         // joint speed limit can leave a swing short and toes down, sole
         // skimming the grass (game 1 seq 7079, a dribbler's support foot
         // 2.6 cm up and 0.46 m from its spot).
@@ -437,8 +441,9 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
         if (!whole && !in.reset && ctx.ankles.valid && !lo.planted[side] && !(contact && act->kick_foot == side)) {
           float fx, fy;
           body.to_field(m[joint][3].x, m[joint][3].z, fx, fy);
-          if (pm::hypot(fx - ctx.ankles.ankle[side].x, fy - ctx.ankles.ankle[side].y) > kSkimStepM) {
-            clear = kSwingClearM;
+          const float travel = pm::hypot(fx - ctx.ankles.ankle[side].x, fy - ctx.ankles.ankle[side].y);
+          if (travel > kSkimStepM) {
+            clear = swing_clear(travel, root_step);
             lee = std::max(lee, kSkimLevelDeg);
           }
         }

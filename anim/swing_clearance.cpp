@@ -29,12 +29,17 @@ const FootBox& foot_box() {
 
 }  // namespace
 
-bool may_skim(float ankle_height, float travel_m) {
-  static const float reach = glm::length(foot_box().centre) + glm::length(foot_box().half);
-  return travel_m > kSkimStepM && ankle_height - reach < kSwingClearM;
+float swing_clear(float travel_m, float root_m) {
+  if (!(travel_m > kSkimStepM)) return 0.0f;
+  return std::clamp(kSwingClearPerM * std::min(travel_m, kSwingTravelPerRoot * root_m), kSwingClearM, kSwingClearMaxM);
 }
 
-float swing_lift(float ankle_height, float pitch_deg) {
+bool may_skim(float ankle_height, float travel_m, float clear_m) {
+  static const float reach = glm::length(foot_box().centre) + glm::length(foot_box().half);
+  return travel_m > kSkimStepM && ankle_height - reach < clear_m;
+}
+
+float swing_lift(float ankle_height, float pitch_deg, float clear_m) {
   // Pitched about Z, the box's X axis leans up by sin, its Y axis by cos
   // (Z stays level): the lowest corner is the centre's height less each
   // half side times its axis's lean.
@@ -42,7 +47,7 @@ float swing_lift(float ankle_height, float pitch_deg) {
   pm::sincos(pitch_deg * kDeg, s, c);
   const FootBox& box = foot_box();
   const float sole = ankle_height + box.centre.x * s + box.centre.y * c - box.half.x * std::fabs(s) - box.half.y * std::fabs(c);
-  return std::max(0.0f, kSwingClearM - sole);
+  return std::max(0.0f, clear_m - sole);
 }
 
 }  // namespace mc::anim

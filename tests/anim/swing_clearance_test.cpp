@@ -27,11 +27,14 @@ float solved_sole(LegPoseJob& job, std::array<float, kMaxDof>& a) {
 
 TEST(SwingClearance, ALiftedLegPutsItsSoleAtTheClearance) {
   // A leg swinging through, its ankle at heights and its sole at pitches a
-  // run gives it; the other foot under its hip.
+  // run gives it; the other foot under its hip. The clearance asked of a
+  // slow swing and of a sprinter's.
+  int lifted_before = 0;
+  for (const float clear : {kSwingClearM, 0.15f}) {
   int lifted = 0;
   for (float h : {0.06f, 0.09f, 0.12f, 0.16f})
     for (float pitch : {-40.0f, -20.0f, 0.0f, 15.0f, 30.0f}) {
-      SCOPED_TRACE(testing::Message() << "ankle " << h << " m, pitch " << pitch);
+      SCOPED_TRACE(testing::Message() << "clearance " << clear << " m, ankle " << h << " m, pitch " << pitch);
       std::array<float, kMaxDof> a{};
       LegPoseJob job;
       job.pelvis_height = 0.93f;
@@ -39,36 +42,65 @@ TEST(SwingClearance, ALiftedLegPutsItsSoleAtTheClearance) {
       job.feet[0].pitch_deg = pitch;
       job.feet[1].ankle_ms[1] = 0.08f; job.feet[1].ankle_ms[2] = -0.11f;
       const float before = solved_sole(job, a);
-      const float up = swing_lift(h, pitch);
+      const float up = swing_lift(h, pitch, clear);
       EXPECT_GE(up, 0.0f);
       job.feet[0].ankle_ms[1] += up;
       const float after = solved_sole(job, a);
       if (up > 0) {
         ++lifted;
-        EXPECT_LT(before, kSwingClearM - 1e-3f);
-        EXPECT_GE(after, kSwingClearM - 1e-3f);
+        EXPECT_LT(before, clear - 1e-3f);
+        EXPECT_GE(after, clear - 1e-3f);
         // The sole asked for is the sole posed, unless the ankle could not
         // bend as far (toes up, the knee bent): then the toes are higher.
         if (job.ankle_pitch_deg[0] >= -60.0f && job.ankle_pitch_deg[0] <= 35.0f) {
-          EXPECT_NEAR(after, kSwingClearM, 1e-3f);
+          EXPECT_NEAR(after, clear, 1e-3f);
         }
       } else {
-        EXPECT_GE(before, kSwingClearM - 1e-3f);  // a foot left alone was clear already
+        EXPECT_GE(before, clear - 1e-3f);  // a foot left alone was clear already
       }
     }
+  // Some feet are lifted and, at the slow swing's clearance, some are
+  // clear already; a higher clearance lifts more of them.
   EXPECT_GT(lifted, 5);
-  EXPECT_LT(lifted, 20);
+  if (clear == kSwingClearM) {
+    EXPECT_LT(lifted, 20);
+  }
+  EXPECT_GT(lifted, lifted_before);
+  lifted_before = lifted;
+  }
+}
+
+TEST(SwingClearance, AFootThatTravelsFurtherKeepsHigherWhileTheBodyRunsWithIt) {
+  // A foot that barely moves is not looked at; a slow swing keeps the floor.
+  EXPECT_EQ(swing_clear(kSkimStepM, 1.0f), 0.0f);
+  EXPECT_FLOAT_EQ(swing_clear(0.10f, 0.05f), kSwingClearM);
+  // A sprinter's swing (0.5 m a frame at 9 m/s, the body 0.45 m): higher
+  // than a jog's (0.25 m, the body 0.15 m), within the ceiling.
+  const float jog = swing_clear(0.25f, 0.15f), sprint = swing_clear(0.5f, 0.45f);
+  EXPECT_GT(jog, kSwingClearM);
+  EXPECT_GT(sprint, jog + 0.05f);
+  EXPECT_LE(sprint, kSwingClearMaxM);
+  EXPECT_FLOAT_EQ(swing_clear(3.0f, 3.0f), kSwingClearMaxM);
+  // A player who stops: the body hardly moves while the last swing still
+  // travels. It keeps the slow swing's floor, or the body floats.
+  EXPECT_FLOAT_EQ(swing_clear(0.5f, 0.02f), kSwingClearM);
+  EXPECT_LT(swing_clear(0.5f, 0.1f), sprint);
+  // Never lower for a foot that travels further.
+  for (float root : {0.0f, 0.1f, 0.3f})
+    for (float d = 0.06f; d < 1.0f; d += 0.01f) EXPECT_GE(swing_clear(d + 0.01f, root), swing_clear(d, root));
 }
 
 TEST(SwingClearance, OnlyAFootThatTravelsLowIsLookedAt) {
-  EXPECT_FALSE(may_skim(0.08f, kSkimStepM));         // a foot that barely moves
-  EXPECT_TRUE(may_skim(0.08f, 2 * kSkimStepM));      // low and on its way
-  EXPECT_FALSE(may_skim(0.40f, 2 * kSkimStepM));     // high in its swing
+  EXPECT_FALSE(may_skim(0.08f, kSkimStepM, kSwingClearM));      // a foot that barely moves
+  EXPECT_TRUE(may_skim(0.08f, 2 * kSkimStepM, kSwingClearM));   // low and on its way
+  EXPECT_FALSE(may_skim(0.40f, 2 * kSkimStepM, kSwingClearM));  // high in its swing
+  EXPECT_TRUE(may_skim(0.30f, 0.6f, kSwingClearMaxM));          // a sprinter's, asked higher
   // Whatever way the foot is turned, an ankle may_skim leaves alone has its
   // sole clear: the lowest corner of the box over a sweep of orientations.
   const Segment& box = human_skeleton().joints[kRFoot].segment;
+  for (const float clear : {kSwingClearM, kSwingClearMaxM})
   for (float h = 0.0f; h < 0.5f; h += 0.01f) {
-    if (may_skim(h, 1.0f)) continue;
+    if (may_skim(h, 1.0f, clear)) continue;
     float lowest = 1.0f;
     for (float p = -180.0f; p < 180.0f; p += 15.0f)
       for (float r = -90.0f; r <= 90.0f; r += 15.0f) {
@@ -77,7 +109,7 @@ TEST(SwingClearance, OnlyAFootThatTravelsLowIsLookedAt) {
         m = glm::rotate(m, glm::radians(r), glm::vec3(1, 0, 0));
         lowest = std::min(lowest, segment_lowest_ms(box, m));
       }
-    EXPECT_GE(lowest, kSwingClearM) << "ankle " << h;
+    EXPECT_GE(lowest, clear) << "ankle " << h << ", clearance " << clear;
   }
 }
 

@@ -10,7 +10,7 @@
 // benchmark still reports the 3 MB target as not met. This test guards the
 // measured size instead (kRecordingBound), so that a change that makes the
 // file bigger still fails here; lower the bound to 3 MB when the codec or
-// the animation wins the 6 % back. Raised three times since, from 3.200 to 3.205
+// the animation wins the 6 % back. Raised since, first from 3.200 to 3.205
 // MB: the arms lifted clear of the thighs (issue 23, 955 player-frames with
 // a hand inside a thigh to 0) cost 0.2 % (3.195 -> 3.202 MB); then to 3.210
 // MB: 6 cm of clearance instead of 3, so that no hand passes through a
@@ -29,7 +29,10 @@
 // the 9+ m/s band's grounded foot at 60 Hz 3.9 -> 0.6 m/s), 0.13 %
 // (3,236,762 B; game 2 3,216,463). Legs turned apart where the clients'
 // blend brings them through each other (anim/drawn_leg_clearance.hpp)
-// added 77 B within it (3,236,839 B; game 2 3,216,534).
+// added 77 B within it (3,236,839 B; game 2 3,216,534). Then to 3.245 MB:
+// a foot in the air kept higher the further it travels with the body
+// (anim/swing_clearance.hpp; every grounded-foot band at the clients' 60 Hz
+// within issue 23's 0.5 m/s), 0.16 % (3,241,954 B; game 2 3,222,392).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -84,7 +87,7 @@ TEST_P(RealGameSize, StreamAndRecordingMeetTheirTargets) {
   }
   struct stat st {};
   ASSERT_EQ(::stat(path.c_str(), &st), 0);
-  constexpr off_t kRecordingBound = 3'240'000;  // the target is 3'000'000: see the top of this file
+  constexpr off_t kRecordingBound = 3'245'000;  // the target is 3'000'000: see the top of this file
   EXPECT_LE(st.st_size, kRecordingBound) << "the recording of a full game grew past its measured size";
   if (st.st_size > 3'000'000)
     std::printf("[ target ] recording %lld B: over the 3 MB target (not met since issue 23)\n",
