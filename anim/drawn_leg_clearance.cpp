@@ -134,15 +134,16 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
   // The frame itself may come no closer than it was, or than the margin
   // (the next frame's blend starts from it).
   const float frame_floor = std::min(legs.clearance(pb), kDrawnApartM);
-  // Leg `side`'s hip dof `k` turned by `way` kDrawnStepDeg at a time, until
-  // the blend clears or a bound stops it.
-  auto turn_hip = [&](int side, std::size_t k, float way) {
+  // Leg `side`'s dof `k` (the hip's or the knee's) turned by `way`
+  // kDrawnStepDeg at a time, until the blend clears or a bound stops it.
+  auto turn_dof = [&](int side, std::size_t k, float way) {
     for (float turn = kDrawnStepDeg; turn <= kDrawnMostDeg + 1e-3f; turn += kDrawnStepDeg) {
       std::copy_n(a.begin(), dof::kCount, cand.begin());
       cand[k] += turn * way;
       clamp_to_limits(skel, cand);
       if (cand[k] == a[k]) return;  // at its limit
       if (hip_turning_too_fast(last_angles, cand, kMaxLegStepDeg + kSeparateAgainDeg, side) >= 0) return;
+      if (std::fabs(cand[k] - last_angles[k]) > kMaxLegStepDeg) return;  // the knee's speed limit
       std::copy_n(cand.begin(), dof::kCount, pb.angles.begin());
       if (legs.clearance(pb) < frame_floor) return;
       const Drawn d = drawn_frame(legs, pa, pb);
@@ -159,15 +160,20 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
   };
   // A leg in the air turns out (abduction) or, crossed over the other one,
   // further across; or about its own axis (the hip's rotation), which
-  // swings a foot's toe or heel out of the other foot's way.
+  // swings a foot's toe or heel out of the other foot's way; or bends or
+  // straightens its knee, which lifts or moves its foot past the other one
+  // (a turning step whose swing crosses in front of the planted foot).
   for (int side = 0; side < 2; ++side) {
     if (planted[side]) continue;
     const auto hip = static_cast<std::size_t>(side == 0 ? dof::kRHip : dof::kLHip);
     const float out = side == 0 ? -1.0f : 1.0f;  // the right abducts towards -X, the left towards +X
     for (const float way : {out, -out}) {
-      turn_hip(side, hip + 1, way);
-      turn_hip(side, hip + 2, way);
+      turn_dof(side, hip + 1, way);
+      turn_dof(side, hip + 2, way);
     }
+    const auto knee = static_cast<std::size_t>(side == 0 ? dof::kRKnee : dof::kLKnee);
+    turn_dof(side, knee, 1.0f);
+    turn_dof(side, knee, -1.0f);
   }
   if (best <= before.clearance) return false;
   std::copy_n(best_a.begin(), dof::kCount, a.begin());

@@ -1,13 +1,15 @@
 // keep_legs_apart_drawn: legs that are apart at both frames but pass
 // through each other as the clients draw the frame between them
-// (LegBlend, proto/SPEC.md 4.7) are turned apart at the frame; the planted
-// leg stays, the hip keeps within its speed limit, and frames whose blend
+// (LegBlend, proto/SPEC.md 4.7) are turned apart at the frame (at the hip,
+// or a swing that crosses low lifted with its knee); the planted leg
+// stays, the joints keep within their speed limits, and frames whose blend
 // is clear are left alone.
 #include "anim/drawn_leg_clearance.hpp"
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <span>
 
 #include "anim/human_skeleton.hpp"
@@ -96,6 +98,66 @@ TEST(KeepLegsApartDrawn, ABlendThatKeepsApartAndPlantedLegsAreLeftAlone) {
   const bool planted[2] = {true, true};
   EXPECT_FALSE(keep_legs_apart_drawn(d.legs, human_skeleton(), nullptr, d.last, d.last_angles, d.now, planted, d.a));
   EXPECT_EQ(d.a, before);
+}
+
+TEST(KeepLegsApartDrawn, ASwingThatCrossesLowLiftsItsFootWithTheKnee) {
+  // The left leg straight under its hip on the grass; the right swings from
+  // 28 deg back to 28 deg forward, adducted 16 deg (a step that crosses in
+  // front of the planted foot), its knee straightening from 20 deg. Both
+  // frames keep the legs apart; half-way through, the swinging foot passes
+  // through the planted one. No turn of the hip clears it as well as
+  // bending the knee a little more at the frame, which lifts the foot as
+  // it passes.
+  LegBlend legs{human_skeleton()};
+  std::array<float, dof::kCount> last_angles{}, a{};
+  last_angles[dof::kRHip] = -28.0f;
+  last_angles[dof::kRHip + 1] = 16.0f;
+  last_angles[dof::kRKnee] = -20.0f;
+  a[dof::kRHip] = 28.0f;
+  a[dof::kRHip + 1] = 16.0f;
+  auto at = [](const std::array<float, dof::kCount>& q) {
+    PlayerPose p = pose(q);
+    p.z = 1.0f;
+    return p;
+  };
+  const PlayerPose last = at(last_angles);
+  const DrawnRoot now{10.0f, -5.0f, 1.0f, 30.0f};
+  ASSERT_GT(legs.clearance(last), kDrawnApartM);
+  ASSERT_GT(legs.clearance(at(a)), kDrawnApartM);
+  ASSERT_LT(drawn_leg_clearance(legs, last, now, a), 0.0f);
+  const auto before = a;
+  const bool left_planted[2] = {false, true};
+  EXPECT_TRUE(keep_legs_apart_drawn(legs, human_skeleton(), nullptr, last, last_angles, now, left_planted, a));
+  EXPECT_GE(drawn_leg_clearance(legs, last, now, a), 0.0f);
+  // The right knee bent further; nothing else moved.
+  EXPECT_LT(a[dof::kRKnee], before[dof::kRKnee]);
+  for (int d = 0; d < dof::kCount; ++d) {
+    if (d == dof::kRKnee) continue;
+    EXPECT_EQ(a[static_cast<std::size_t>(d)], before[static_cast<std::size_t>(d)]) << d;
+  }
+  // Within the joint speed limit since the frame before.
+  EXPECT_LE(std::fabs(a[dof::kRKnee] - last_angles[dof::kRKnee]), kMaxLegStepDeg);
+}
+
+TEST(KeepLegsApartDrawn, TheKneeStaysWithinItsSpeedLimit) {
+  // The same crossing swing, its knee bent 50 deg since the frame before
+  // (the joint speed limit) and the frame's own feet too close: bending it
+  // further would clear the blend (to -82 deg), but faster than a knee may
+  // turn.
+  LegBlend legs{human_skeleton()};
+  std::array<float, dof::kCount> last_angles{}, a{};
+  last_angles[dof::kRHip] = -28.0f;
+  last_angles[dof::kRHip + 1] = 12.0f;
+  a[dof::kRHip] = 28.0f;
+  a[dof::kRHip + 1] = 12.0f;
+  a[dof::kRKnee] = -kMaxLegStepDeg;
+  PlayerPose last = pose(last_angles);
+  last.z = 1.0f;
+  const DrawnRoot now{10.0f, -5.0f, 1.0f, 30.0f};
+  ASSERT_LT(drawn_leg_clearance(legs, last, now, a), 0.0f);
+  const bool left_planted[2] = {false, true};
+  keep_legs_apart_drawn(legs, human_skeleton(), nullptr, last, last_angles, now, left_planted, a);
+  EXPECT_LE(std::fabs(a[dof::kRKnee] - last_angles[dof::kRKnee]), kMaxLegStepDeg);
 }
 
 TEST(KeepLegsApartDrawn, TheTurnStaysWithinTheHipsSpeedLimit) {

@@ -254,7 +254,11 @@ constexpr Bounds kAt20Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 
 // 0.56/0.63 -> 0.46/0.46, every band within issue 23's 0.5 on both games;
 // too close 4/1/10 and 3/0/15 -> 3/2/8 and 3/0/9 (game 1's two shins 0.3
 // and 3 mm inside). Bounds: every 60 Hz band 0.5, 4/1/15 -> 3/2/9.
-constexpr Bounds kAt60Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 3, 2, 9, 0, 150, 0.02, 4.5,
+// A leg in the air may also bend or straighten its knee where the clients'
+// blend brings the legs through each other (anim/drawn_leg_clearance.cpp,
+// 2026-11-29): too close at 60 Hz 3/2/8 and 3/0/9 -> 3/3/6 and 2/0/4, no
+// other figure moved by more than its rounding. Bounds: 3/2/9 -> 3/3/6.
+constexpr Bounds kAt60Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 3, 3, 6, 0, 150, 0.02, 4.5,
                          -0.02, 0.31};
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
