@@ -166,6 +166,7 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
 
   const FieldOf body{BodyFrame(o.x, o.y, o.heading)};
   bool in_air[2] = {false, false};
+  float free[2] = {0, 0};
   float travel[2] = {0, 0};
   for (std::size_t i = 0; i < 2; ++i) {
     const Leg& leg = leg_[i];
@@ -174,6 +175,7 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
     travel[i] = glm::length((fb.ankle - glm::vec3(pb.x, pb.z, pb.y)) - (fa.ankle - glm::vec3(pa.x, pa.z, pa.y)));
     const bool ca = fa.sole < kContactM, cb = fb.sole < kContactM;
     in_air[i] = !ca && !cb;
+    free[i] = in_air[i] ? 1.0f : ca && !cb ? t : !ca && cb ? 1.0f - t : 0.0f;  // keep_apart's
     if (in_air[i]) continue;  // in the air in both: the blend's arc
     // The drawn pose's hip (the thigh joint) and ankle.
     float* q = o.angles.data();
@@ -247,7 +249,7 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
                         sideways / kApartLeverM * ramp});
     along[i] = std::min(room[i], std::max(0.0f, kApartTravelM - travel[i]) / kApartLeverM * ramp);
   }
-  keep_apart(in_air, room, along, o);
+  keep_apart(free, room, along, o);
 }
 
 void LegBlend::turn_thigh(const Leg& leg, const glm::mat4& pelvis, const glm::mat4& thigh, const glm::mat3& rotation,
@@ -326,7 +328,7 @@ float LegBlend::clearance(const PlayerPose& o) const {
   return nearest(thigh, shin, foot).clearance;
 }
 
-void LegBlend::keep_apart(const bool in_air[2], float room[2], float along[2], PlayerPose& o) const {
+void LegBlend::keep_apart(const float free[2], float room[2], float along[2], PlayerPose& o) const {
   const auto& joints = skeleton_.joints;
   float* q = o.angles.data();
   auto local = [&](const Joint& j) { return local_model(joints, j.index, j.first_angle, q); };
@@ -342,9 +344,13 @@ void LegBlend::keep_apart(const bool in_air[2], float room[2], float along[2], P
       foot[i] = shin[i] * local(leg_[i].foot);
       // A foot on the grass stays where the first part left it; one in the
       // air moves freely from twice that height (between: in proportion,
-      // so that the turn grows smoothly as the foot rises).
+      // so that the turn grows smoothly as the foot rises). A foot leaving
+      // or landing moves at least by its `free` share, however low the
+      // blend draws it: it is on its way, not planted (a swing that lands
+      // beside the other foot and passes through it late in the frame;
+      // 2026-11-29, legs too close at 60 Hz 18 -> 9 player-frames).
       const float sole = sole_height(joints[static_cast<std::size_t>(leg_[i].foot.index)].segment, foot[i]);
-      share[i] = in_air[i] ? 1.0f : std::clamp((sole - kContactM) / kContactM, 0.0f, 1.0f);
+      share[i] = std::max(free[i], std::clamp((sole - kContactM) / kContactM, 0.0f, 1.0f));
     }
     const float shares = share[0] + share[1];
     if (shares <= 0.0f) return;

@@ -146,11 +146,12 @@ class LegBlend {
   // `pelvis` and `thigh` are the root's and the thigh's model transforms.
   void turn_thigh(const Leg& leg, const glm::mat4& pelvis, const glm::mat4& thigh, const glm::mat3& rotation,
                   float* angles) const;
-  // The second part of the step: the legs' boxes kept apart. `in_air`: the
-  // foot is off the grass in both frames; `room`: how far each leg may
+  // The second part of the step: the legs' boxes kept apart. `free`: how
+  // freely each leg may turn whatever its drawn sole (1 off the grass in
+  // both frames, t leaving it, 1 - t landing, 0 on it); `room`: how far each leg may
   // still turn (rad), and `along` how far in a turn that may carry its
   // ankle along its travel; both used up as it turns.
-  void keep_apart(const bool in_air[2], float room[2], float along[2], PlayerPose& o) const;
+  void keep_apart(const float free[2], float room[2], float along[2], PlayerPose& o) const;
 
   const SkeletonDef& skeleton_;
   std::array<Leg, 2> leg_{};

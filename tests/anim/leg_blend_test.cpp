@@ -393,20 +393,30 @@ TEST(LegBlend, GoldenVectorsForTheClients) {
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
     auto in = [&](float lo, float hi) { return lo + (hi - lo) * u01(rng); };
     nlohmann::json cases = nlohmann::json::array();
-    for (int i = 0; i < 72; ++i) {
+    for (int i = 0; i < 80; ++i) {
       // Each foot planted (ankle 8 cm up), or 12-20 cm up in the air, in each frame.
       auto height = [&] { return u01(rng) < 0.5f ? 0.08f : in(0.12f, 0.2f); };
       PlayerPose a = stance(in(-1, 1), in(-0.35f, 0.25f), in(-0.35f, 0.25f), height(), height(), in(-8, 8));
       PlayerPose b = stance(a.x + in(0, 0.4f), in(-0.35f, 0.25f), in(-0.35f, 0.25f), height(), height(), in(-8, 8));
-      if (i >= 48) {
-        // The last 24: a right leg in the air swinging past a left one near
+      if (i >= 48 && i < 72) {
+        // Cases 48-71: a right leg in the air swinging past a left one near
         // the midline (the second part of the step, the legs kept apart);
-        // the last 8 swing far enough for the ankle's travel to bound the turn.
+        // 64-71 swing far enough for the ankle's travel to bound the turn.
         const bool far = i >= 64;
         const float gap = in(0.0f, 0.02f), left = in(-0.1f, 0.1f), left_h = height();
         a = stance(in(-1, 1), far ? in(-0.26f, -0.22f) : in(-0.2f, -0.1f), left, left_h, in(0.12f, 0.2f), in(-8, 8), gap);
         b = stance(a.x + in(0.1f, 0.3f), far ? in(0.18f, 0.22f) : in(0.1f, 0.18f), left, left_h, in(0.12f, 0.2f),
                    in(-8, 8), gap);
+      }
+      if (i >= 72) {
+        // Cases 72-79: the same swing past a planted left leg, the right foot
+        // landing (on the grass in b only) or leaving (in a only): it may
+        // turn out of the way by 1 - t or t however low the blend draws it.
+        const bool landing = i % 2 == 0;
+        const float gap = in(0.0f, 0.02f), left = in(-0.1f, 0.1f);
+        const float up_a = landing ? in(0.12f, 0.2f) : 0.08f, up_b = landing ? 0.08f : in(0.12f, 0.2f);
+        a = stance(in(-1, 1), in(-0.2f, -0.1f), left, 0.08f, up_a, in(-8, 8), gap);
+        b = stance(a.x + in(0.1f, 0.3f), in(0.1f, 0.18f), left, 0.08f, up_b, in(-8, 8), gap);
       }
       a.y = in(-1, 1);
       b.y = a.y + in(-0.1f, 0.1f);
@@ -436,8 +446,8 @@ TEST(LegBlend, GoldenVectorsForTheClients) {
   std::ifstream file(path);
   ASSERT_TRUE(file.good()) << path;
   const nlohmann::json want = nlohmann::json::parse(file);
-  ASSERT_EQ(want["cases"].size(), 72u);
-  int moved = 0, apart = 0;
+  ASSERT_EQ(want["cases"].size(), 80u);
+  int moved = 0, apart = 0, on_the_way = 0;
   for (std::size_t i = 0; i < want["cases"].size(); ++i) {
     const auto& c = want["cases"][i];
     const std::vector<float> got = step(c);
@@ -449,9 +459,11 @@ TEST(LegBlend, GoldenVectorsForTheClients) {
     }
     moved += changed;
     if (i >= 48) apart += changed;
+    if (i >= 72) on_the_way += changed;
   }
-  EXPECT_GT(moved, 12);  // the vectors exercise the step
-  EXPECT_GE(apart, 8);   // and its second part
+  EXPECT_GT(moved, 12);      // the vectors exercise the step
+  EXPECT_GE(apart, 8);       // and its second part
+  EXPECT_GE(on_the_way, 4);  // with a foot leaving or landing
 }
 
 }  // namespace

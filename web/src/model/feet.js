@@ -205,6 +205,11 @@ export function keepFeetOfPlayer(skel, pa, pb, t, o) {
     const fa = place(skel, leg, pa, placeA), fb = place(skel, leg, pb, placeB);
     const ca = fa.sole < CONTACT_M, cb = fb.sole < CONTACT_M;
     inAir[i] = !ca && !cb;
+    // How freely keepApart may turn it: a foot in the air in both frames
+    // fully; one leaving the grass by t, one landing by 1 - t (still on
+    // its way through the blend, however low the blend draws it); one on
+    // the grass in both not at all (or by its drawn sole's height).
+    free[i] = inAir[i] ? 1 : ca && !cb ? t : !ca && cb ? 1 - t : 0;
     // The ankle's travel about the root over the frame, and the thigh's own
     // turn (deg): the room for keepApart (rad) grows from nothing at either
     // frame at the rate the thigh's turn leaves below APART_SPEED_DEG and
@@ -265,7 +270,7 @@ export function keepFeetOfPlayer(skel, pa, pb, t, o) {
   keepApart(skel, legs, o);
 }
 
-const inAir = [false, false], room = [0, 0], along = [0, 0];
+const inAir = [false, false], free = [0, 0], room = [0, 0], along = [0, 0];
 const rotA = new Float64Array(9), rotB = new Float64Array(9);
 
 // The rotation (deg) between a thigh's local rotations in two poses.
@@ -354,9 +359,10 @@ const PAIRS = [['thigh', 'rThigh', 'pThigh'], ['shin', 'rShin', 'pShin'], ['foot
 
 // The step's second part: the legs' boxes kept APART_M beyond half the
 // wider box's width, thighs, shins and feet. APART_ROUNDS times: a leg in
-// the air (share 1; one on the grass in one frame in proportion to its
-// sole's height from CONTACT_M to twice that; one on the grass, 0) turns at
-// the hip by its share of the shortfall of the pair furthest inside,
+// the air (share 1; one on the grass in one frame by the larger of its
+// `free` share and its sole's height from CONTACT_M to twice that; one on
+// the grass, 0) turns at the hip by its share of the shortfall of the pair
+// furthest inside,
 // within what is left of its room: thighs and shins away from the other
 // hip, feet away from the other foot's nearest point (within `along`).
 function keepApart(skel, legs, o) {
@@ -365,7 +371,7 @@ function keepApart(skel, legs, o) {
     for (let i = 0; i < 2; i++) {
       poseLeg(skel, legs[i], o, bothLegs[i]);
       const sole = soleHeight(skel, legs[i], bothLegs[i]);
-      share[i] = inAir[i] ? 1 : Math.min(Math.max((sole - CONTACT_M) / CONTACT_M, 0), 1);
+      share[i] = Math.max(free[i], Math.min(Math.max((sole - CONTACT_M) / CONTACT_M, 0), 1));
     }
     const shares = share[0] + share[1];
     if (shares <= 0) return;
