@@ -45,11 +45,10 @@ float swing_clear(float travel_m, float root_m);
 
 // Whether a foot in the air whose ankle target is `ankle_height` m up and
 // `travel_m` from where its ankle was on the last frame (over the grass)
-// may need raising: no corner of the foot's box is further from the ankle
-// than its centre's offset plus its half diagonal. Most feet in the air
-// are higher.
+// may need raising to a clearance of `clear_m`: no corner of the foot's box
+// is further from the ankle than its centre's offset plus its half
+// diagonal. Most feet in the air are higher.
 bool may_skim(float ankle_height, float travel_m, float clear_m);
-
 
 // How far to raise an ankle target `ankle_height` m up whose sole is asked
 // for at `pitch_deg` (LegPoseJob's FootTarget; level sideways) so that the
