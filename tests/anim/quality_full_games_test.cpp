@@ -252,7 +252,7 @@ constexpr Bounds kAt20Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 
 // body runs with it (anim/swing_clearance.hpp, 2026-11-29): at 60 Hz the
 // 5-6 m/s bands 0.52/0.58 -> 0.43/0.48, 8-9 m/s 0.73/0.58 -> 0.46/0.38, 9+
 // 0.56/0.63 -> 0.46/0.46, every band within issue 23's 0.5 on both games;
-// too close 4/1/10 and 3/0/15 -> 3/2/8 and 3/0/9 (game 1's two shins 0.3
+// too close 4/1/10 and 3/0/15 -> 3/2/8 and 3/0/9 (game 1's two shins under 1
 // and 3 mm inside). Bounds: every 60 Hz band 0.5, 4/1/15 -> 3/2/9.
 // A leg in the air may also bend or straighten its knee where the clients'
 // blend brings the legs through each other (anim/drawn_leg_clearance.cpp,
