@@ -142,8 +142,12 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
       cand[k] += turn * way;
       clamp_to_limits(skel, cand);
       if (cand[k] == a[k]) return;  // at its limit
-      if (hip_turning_too_fast(last_angles, cand, kMaxLegStepDeg + kSeparateAgainDeg, side) >= 0) return;
-      if (std::fabs(cand[k] - last_angles[k]) > kMaxLegStepDeg) return;  // the knee's speed limit
+      // Each joint within its own speed limit: the hip's three dofs as one
+      // rotation, the knee's one angle.
+      const bool knee = k == static_cast<std::size_t>(dof::kRKnee) || k == static_cast<std::size_t>(dof::kLKnee);
+      if (knee ? std::fabs(cand[k] - last_angles[k]) > kMaxLegStepDeg
+               : hip_turning_too_fast(last_angles, cand, kMaxLegStepDeg + kSeparateAgainDeg, side) >= 0)
+        return;
       std::copy_n(cand.begin(), dof::kCount, pb.angles.begin());
       if (legs.clearance(pb) < frame_floor) return;
       const Drawn d = drawn_frame(legs, pa, pb);

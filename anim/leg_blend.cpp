@@ -165,8 +165,7 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
   };
 
   const FieldOf body{BodyFrame(o.x, o.y, o.heading)};
-  bool in_air[2] = {false, false};
-  float free[2] = {0, 0};
+  float free[2] = {0, 0};  // keep_apart's share whatever the drawn sole (leg_blend.hpp)
   float travel[2] = {0, 0};
   for (std::size_t i = 0; i < 2; ++i) {
     const Leg& leg = leg_[i];
@@ -174,9 +173,9 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
     // The ankle's travel about the root over the frame (field space).
     travel[i] = glm::length((fb.ankle - glm::vec3(pb.x, pb.z, pb.y)) - (fa.ankle - glm::vec3(pa.x, pa.z, pa.y)));
     const bool ca = fa.sole < kContactM, cb = fb.sole < kContactM;
-    in_air[i] = !ca && !cb;
-    free[i] = in_air[i] ? 1.0f : ca && !cb ? t : !ca && cb ? 1.0f - t : 0.0f;  // keep_apart's
-    if (in_air[i]) continue;  // in the air in both: the blend's arc
+    const bool in_air = !ca && !cb;
+    free[i] = in_air ? 1.0f : ca && !cb ? t : !ca && cb ? 1.0f - t : 0.0f;
+    if (in_air) continue;  // in the air in both: the blend's arc
     // The drawn pose's hip (the thigh joint) and ankle.
     float* q = o.angles.data();
     const glm::mat4 pelvis = root_model(q, o.z);

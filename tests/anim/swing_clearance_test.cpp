@@ -31,42 +31,42 @@ TEST(SwingClearance, ALiftedLegPutsItsSoleAtTheClearance) {
   // slow swing and of a sprinter's.
   int lifted_before = 0;
   for (const float clear : {kSwingClearM, 0.15f}) {
-  int lifted = 0;
-  for (float h : {0.06f, 0.09f, 0.12f, 0.16f})
-    for (float pitch : {-40.0f, -20.0f, 0.0f, 15.0f, 30.0f}) {
-      SCOPED_TRACE(testing::Message() << "clearance " << clear << " m, ankle " << h << " m, pitch " << pitch);
-      std::array<float, kMaxDof> a{};
-      LegPoseJob job;
-      job.pelvis_height = 0.93f;
-      job.feet[0].ankle_ms[0] = 0.15f; job.feet[0].ankle_ms[1] = h; job.feet[0].ankle_ms[2] = 0.11f;
-      job.feet[0].pitch_deg = pitch;
-      job.feet[1].ankle_ms[1] = 0.08f; job.feet[1].ankle_ms[2] = -0.11f;
-      const float before = solved_sole(job, a);
-      const float up = swing_lift(h, pitch, clear);
-      EXPECT_GE(up, 0.0f);
-      job.feet[0].ankle_ms[1] += up;
-      const float after = solved_sole(job, a);
-      if (up > 0) {
-        ++lifted;
-        EXPECT_LT(before, clear - 1e-3f);
-        EXPECT_GE(after, clear - 1e-3f);
-        // The sole asked for is the sole posed, unless the ankle could not
-        // bend as far (toes up, the knee bent): then the toes are higher.
-        if (job.ankle_pitch_deg[0] >= -60.0f && job.ankle_pitch_deg[0] <= 35.0f) {
-          EXPECT_NEAR(after, clear, 1e-3f);
+    int lifted = 0;
+    for (float h : {0.06f, 0.09f, 0.12f, 0.16f})
+      for (float pitch : {-40.0f, -20.0f, 0.0f, 15.0f, 30.0f}) {
+        SCOPED_TRACE(testing::Message() << "clearance " << clear << " m, ankle " << h << " m, pitch " << pitch);
+        std::array<float, kMaxDof> a{};
+        LegPoseJob job;
+        job.pelvis_height = 0.93f;
+        job.feet[0].ankle_ms[0] = 0.15f; job.feet[0].ankle_ms[1] = h; job.feet[0].ankle_ms[2] = 0.11f;
+        job.feet[0].pitch_deg = pitch;
+        job.feet[1].ankle_ms[1] = 0.08f; job.feet[1].ankle_ms[2] = -0.11f;
+        const float before = solved_sole(job, a);
+        const float up = swing_lift(h, pitch, clear);
+        EXPECT_GE(up, 0.0f);
+        job.feet[0].ankle_ms[1] += up;
+        const float after = solved_sole(job, a);
+        if (up > 0) {
+          ++lifted;
+          EXPECT_LT(before, clear - 1e-3f);
+          EXPECT_GE(after, clear - 1e-3f);
+          // The sole asked for is the sole posed, unless the ankle could not
+          // bend as far (toes up, the knee bent): then the toes are higher.
+          if (job.ankle_pitch_deg[0] >= -60.0f && job.ankle_pitch_deg[0] <= 35.0f) {
+            EXPECT_NEAR(after, clear, 1e-3f);
+          }
+        } else {
+          EXPECT_GE(before, clear - 1e-3f);  // a foot left alone was clear already
         }
-      } else {
-        EXPECT_GE(before, clear - 1e-3f);  // a foot left alone was clear already
       }
+    // Some feet are lifted and, at the slow swing's clearance, some are
+    // clear already; a higher clearance lifts more of them.
+    EXPECT_GT(lifted, 5);
+    if (clear == kSwingClearM) {
+      EXPECT_LT(lifted, 20);
     }
-  // Some feet are lifted and, at the slow swing's clearance, some are
-  // clear already; a higher clearance lifts more of them.
-  EXPECT_GT(lifted, 5);
-  if (clear == kSwingClearM) {
-    EXPECT_LT(lifted, 20);
-  }
-  EXPECT_GT(lifted, lifted_before);
-  lifted_before = lifted;
+    EXPECT_GT(lifted, lifted_before);
+    lifted_before = lifted;
   }
 }
 
@@ -98,18 +98,19 @@ TEST(SwingClearance, OnlyAFootThatTravelsLowIsLookedAt) {
   // Whatever way the foot is turned, an ankle may_skim leaves alone has its
   // sole clear: the lowest corner of the box over a sweep of orientations.
   const Segment& box = human_skeleton().joints[kRFoot].segment;
-  for (const float clear : {kSwingClearM, kSwingClearMaxM})
-  for (float h = 0.0f; h < 0.5f; h += 0.01f) {
-    if (may_skim(h, 1.0f, clear)) continue;
-    float lowest = 1.0f;
-    for (float p = -180.0f; p < 180.0f; p += 15.0f)
-      for (float r = -90.0f; r <= 90.0f; r += 15.0f) {
-        glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0, h, 0));
-        m = glm::rotate(m, glm::radians(p), glm::vec3(0, 0, 1));
-        m = glm::rotate(m, glm::radians(r), glm::vec3(1, 0, 0));
-        lowest = std::min(lowest, segment_lowest_ms(box, m));
-      }
-    EXPECT_GE(lowest, clear) << "ankle " << h << ", clearance " << clear;
+  for (const float clear : {kSwingClearM, kSwingClearMaxM}) {
+    for (float h = 0.0f; h < 0.5f; h += 0.01f) {
+      if (may_skim(h, 1.0f, clear)) continue;
+      float lowest = 1.0f;
+      for (float p = -180.0f; p < 180.0f; p += 15.0f)
+        for (float r = -90.0f; r <= 90.0f; r += 15.0f) {
+          glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0, h, 0));
+          m = glm::rotate(m, glm::radians(p), glm::vec3(0, 0, 1));
+          m = glm::rotate(m, glm::radians(r), glm::vec3(1, 0, 0));
+          lowest = std::min(lowest, segment_lowest_ms(box, m));
+        }
+      EXPECT_GE(lowest, clear) << "ankle " << h << ", clearance " << clear;
+    }
   }
 }
 

@@ -358,13 +358,12 @@ const share = [0, 0];
 const PAIRS = [['thigh', 'rThigh', 'pThigh'], ['shin', 'rShin', 'pShin'], ['foot', 'rFoot', 'pFoot']];
 
 // The step's second part: the legs' boxes kept APART_M beyond half the
-// wider box's width, thighs, shins and feet. APART_ROUNDS times: a leg in
-// the air (share 1; one on the grass in one frame by the larger of its
-// `free` share and its sole's height from CONTACT_M to twice that; one on
-// the grass, 0) turns at the hip by its share of the shortfall of the pair
-// furthest inside,
-// within what is left of its room: thighs and shins away from the other
-// hip, feet away from the other foot's nearest point (within `along`).
+// wider box's width, thighs, shins and feet. APART_ROUNDS times: each leg
+// turns at the hip by its share of the shortfall of the pair furthest
+// inside (1 in the air in both frames; else the larger of its `free` share
+// and its drawn sole's height from CONTACT_M to twice that), within what
+// is left of its room: thighs and shins away from the other hip, feet away
+// from the other foot's nearest point (within `along`).
 function keepApart(skel, legs, o) {
   const J = skel.joints;
   for (let round = 0; round < APART_ROUNDS; round++) {
