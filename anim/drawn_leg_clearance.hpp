@@ -40,9 +40,8 @@ inline constexpr float kDrawnApartM = 0.005f;
 // Where its legs come closer than kDrawnApartM, a leg in the air turns at
 // the hip, kDrawnStepDeg at a time up to kDrawnMostDeg: forward or back
 // (flexion), out (abduction), across (a leg crossed over the other one),
-// or about its own axis (a
-// toe or heel out of the other foot's way); or it bends or straightens its
-// knee as far. A turn is refused when the hip would turn faster than the
+// or about its own axis (a toe or heel out of the other foot's way); or it
+// bends or straightens its knee as far. A turn is refused when the hip would turn faster than the
 // joint speed limit plus kSeparateAgainDeg (or a third of that in a third
 // of the frame), or the knee faster than the limit, when the frame's own legs
 // would come closer, when an ankle would pop as drawn where it did not,
