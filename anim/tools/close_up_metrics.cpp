@@ -48,9 +48,11 @@ std::string who(const PoseFrame& f, int k, int m, const PlayerPose& p, const cha
 }  // namespace
 
 CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldState>& states,
-                               const std::vector<PoseFrame>& produced, int draws_per_frame, DrawnLegs drawn_legs) {
+                               const std::vector<PoseFrame>& produced, int draws_per_frame, DrawnLegs drawn_legs,
+                               double draw_phase) {
   CloseUpReport r;
   const int m = std::max(1, draws_per_frame);
+  const double phase = m > 1 ? std::clamp(draw_phase, 0.0, 0.999) : 0.0;
   r.draws_per_frame = m;
   const std::vector<PoseFrame>& frames = view.frames;
   if (frames.empty()) return r;
@@ -117,8 +119,11 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
     const int subs = i + 1 < frames.size() ? m : 1;
     for (int k = 0; k < subs; ++k) {
       const PoseFrame* fp = &frames[i];
-      if (k > 0) {
-        blend_like_clients(frames[i], frames[i + 1], static_cast<float>(k) / static_cast<float>(m), dofs, drawn,
+      // This draw's place between frames i and i + 1 (the last frame is
+      // drawn as it is).
+      const double at = i + 1 < frames.size() ? (k + phase) / m : 0.0;
+      if (at > 0.0) {
+        blend_like_clients(frames[i], frames[i + 1], static_cast<float>(at), dofs, drawn,
                            drawn_legs == DrawnLegs::LegBlend ? &legs : nullptr);
         fp = &drawn;
       } else if (m > 1) {
@@ -129,10 +134,13 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
       if (m > 1) rest_on_grass(skel, drawn);
       const PoseFrame& f = *fp;
       ++r.frames;
-      const double t = (static_cast<double>(i) + static_cast<double>(k) / m) * frame_s;
+      const double t = (static_cast<double>(i) + at) * frame_s;
       // The 20 Hz interval the pair (previous drawn frame, this one) lies in.
       const bool has_interval = k > 0 || i > 0;
       const std::size_t lo = k > 0 ? i : (i > 0 ? i - 1 : 0);
+      // Past frame i as well when this draw is the first after it at a
+      // phase: the pair then spans frame i.
+      const std::size_t hi = k == 0 && at > 0.0 && i > 0 ? i : lo;
       for (std::size_t p = 0; p < kMaxPlayers; ++p) {
         const PlayerPose& pp = f.players[p];
         Geom& g = cur[p];
@@ -215,6 +223,10 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
           const PlayerPose& b = frames[std::min(lo + 1, frames.size() - 1)].players[p];
           pair = (a.state & state_bits::kStand) && (b.state & state_bits::kStand) &&
                  std::hypot(b.x - a.x, b.y - a.y) <= kTeleportM;
+          if (pair && hi > lo) {
+            const PlayerPose& c = frames[hi + 1].players[p];
+            pair = (c.state & state_bits::kStand) && std::hypot(c.x - b.x, c.y - b.y) <= kTeleportM;
+          }
         }
         if (!pair) {
           flush_run(p, t);

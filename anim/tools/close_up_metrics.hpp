@@ -129,10 +129,15 @@ struct CloseUpReport {
 // How drawn frames between two 20 Hz ones are blended: as the clients do
 // (joint angles linearly, then the feet kept on their line or raised off the
 // grass, anim/leg_blend.hpp), or, to measure what that step gives, without it.
+// `draw_phase`: where the drawn frames fall, as a fraction of one drawn
+// frame past each 20 Hz frame (0 <= phase < 1; 0: on the 20 Hz frames and
+// at k / draws_per_frame between them). A display's clock is not locked to
+// the stream's, so a viewer sees every phase; 0 alone is the most
+// favourable one for figures the animator checks at the same points.
 enum class DrawnLegs { AngleBlendOnly, LegBlend };
 CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldState>& states,
                                const std::vector<PoseFrame>& produced, int draws_per_frame,
-                               DrawnLegs legs = DrawnLegs::LegBlend);
+                               DrawnLegs legs = DrawnLegs::LegBlend, double draw_phase = 0.0);
 
 // The report as a table: one column per report (20 Hz, then the drawing rate).
 std::string format_close_up(const std::vector<const CloseUpReport*>& reports);

@@ -5,14 +5,17 @@
 // and run.
 //
 //   matchcast-anim-quality [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR]
-//                          [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N]
-//                          [--detail none|run|kick|full] [--leg-blend none] LOG...
+//                          [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--draw-phase F]
+//                          [--lookahead N] [--detail none|run|kick|full] [--leg-blend none] LOG...
 //
 // --mode mocap takes the kicks and slow walking from the CMU clips
 // (anim/motion_source.hpp; the motion graph is cached in --mocap-cache);
 // --compare animates each log in both modes and prints the metrics side by
 // side (the picture then shows the mocap mode). --draw-rate: the clients'
 // drawing rate measured beside the 20 Hz frames (a multiple of 20, default 60);
+// --draw-phase: where its draws fall, a fraction of one drawn frame past
+// each 20 Hz frame (0 <= F < 1, default 0: on the frames and the thirds; a
+// display's clock is not the stream's, so a viewer sees every phase);
 // drawn as the clients draw it (the angle blend, then the feet and the legs
 // kept apart, anim/leg_blend.hpp); --leg-blend none leaves that step out, to
 // measure what it gives. MATCHCAST_CLOSEUP_BREAKDOWN=1 sorts the
@@ -152,12 +155,14 @@ int main(int argc, char** argv) {
   bool compare = false;
   DrawnLegs drawn_legs = DrawnLegs::LegBlend;
   int draw_rate = 60;
+  double draw_phase = 0.0;
   std::string sheet = "test-output/anim/contact-sheet.png";
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--png" && i + 1 < argc) png = argv[++i];
     else if (arg == "--contact-sheet" && i + 1 < argc) sheet = argv[++i];
     else if (arg == "--draw-rate" && i + 1 < argc) draw_rate = std::atoi(argv[++i]);
+    else if (arg == "--draw-phase" && i + 1 < argc) draw_phase = std::atof(argv[++i]);
     else if (arg == "--lookahead" && i + 1 < argc) cfg.lookahead_cycles = std::atoi(argv[++i]);
     else if (arg == "--mode" && i + 1 < argc && (std::string(argv[i + 1]) == "keyframe" || std::string(argv[i + 1]) == "mocap"))
       mode = argv[++i];
@@ -176,7 +181,7 @@ int main(int argc, char** argv) {
       }
       cfg.detail = *d;
     } else if (!arg.empty() && arg[0] == '-') {
-      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] [--leg-blend none] LOG...\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--draw-phase F] [--lookahead N] [--detail none|run|kick|full] [--leg-blend none] LOG...\n", argv[0]);
       return 2;
     } else {
       logs.push_back(arg);
@@ -186,8 +191,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: --draw-rate must be a multiple of 20\n", argv[0]);
     return 2;
   }
+  if (!(draw_phase >= 0.0 && draw_phase < 1.0)) {
+    std::fprintf(stderr, "%s: --draw-phase must be at least 0 and below 1\n", argv[0]);
+    return 2;
+  }
   if (logs.empty()) {
-    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--lookahead N] [--detail none|run|kick|full] [--leg-blend none] LOG...\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--draw-phase F] [--lookahead N] [--detail none|run|kick|full] [--leg-blend none] LOG...\n", argv[0]);
     return 2;
   }
   // Mocap mode: the caller loads the clips, the animator stays pure.
@@ -230,7 +239,8 @@ int main(int argc, char** argv) {
         sheet.clear();  // the first log's
       }
       const CloseUpReport r20 = measure_close_up(view, x.states, x.frames, 1);
-      const CloseUpReport rd = measure_close_up(view, x.states, x.frames, draw_rate / 20, drawn_legs);
+      const CloseUpReport rd = measure_close_up(view, x.states, x.frames, draw_rate / 20, drawn_legs, draw_phase);
+      if (draw_phase > 0.0) std::printf("drawn at phase %.3f of a drawn frame past each 20 Hz frame\n", draw_phase);
       std::printf("== %s%s (%zu frames, %zu kicks, %.0f B/frame on the wire)\n%s", log.c_str(), label, view.frames.size(),
                   view.kicks.size(), static_cast<double>(view.encoded_bytes) / static_cast<double>(std::max<std::size_t>(1, view.frames.size())),
                   format_close_up({&r20, &rd}).c_str());

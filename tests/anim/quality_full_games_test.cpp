@@ -272,6 +272,18 @@ constexpr Bounds kAt20Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 
 constexpr Bounds kAt60Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 1, 0, 0, 0, 150, 0.02, 4.5,
                          -0.02, 0.31};
 
+// At 60 Hz half a drawn frame later (t = 1/6, 1/2, 5/6 of each frame): a
+// display's clock is not the stream's, so a viewer sees every phase, and
+// the figures above, at the frames and their thirds, are the most
+// favourable one (the animator checks its own frames at the same points,
+// anim/drawn_leg_clearance.hpp). Measured 2026-11-29 (matchcast-anim-quality
+// --draw-phase 0.5): the 8-9 m/s band 0.54/0.45, 9+ 0.49/0.52; thighs /
+// shins / feet too close 0/1/10 and 2/0/6; a hand inside a thigh 1/1 (2.1
+// and 3.6 cm); ankle pops 1/0. Issue 23's targets do not hold here yet; the
+// bounds keep these figures from getting worse.
+constexpr Bounds kAt60HzHalfPhase{0.20, 0.55, 0.55, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 1, 2, 1, 10, 1, 150, 0.02, 4.5,
+                                  -0.02, 0.31};
+
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
   SCOPED_TRACE(what);
   EXPECT_LE(band_mean(r, 0), b.stand_mps);
@@ -336,6 +348,8 @@ void check_log(const char* name) {
   const std::string table = std::string(name) + "\n" + format_close_up({&r20, &r60});
   expect_within(r20, kAt20Hz, "20 Hz\n" + table);
   expect_within(r60, kAt60Hz, "60 Hz\n" + table);
+  const CloseUpReport half = measure_close_up(view, states, frames, 3, DrawnLegs::LegBlend, 0.5);
+  expect_within(half, kAt60HzHalfPhase, "60 Hz, half a drawn frame later\n" + format_close_up({&r20, &half}));
   EXPECT_GT(r20.kicks, 500);  // the game's kicks were found, animated and told
   EXPECT_GT(r20.cadence.values.size(), 10000u);
 }
