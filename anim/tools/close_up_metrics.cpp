@@ -34,10 +34,11 @@ namespace {
 using namespace close_up;
 using namespace posed;
 
-std::string who(const PoseFrame& f, int k, int m, const PlayerPose& p, const char* what) {
+// `k`: the draw's place past frame `f`, in drawn frames (k + phase).
+std::string who(const PoseFrame& f, double k, int m, const PlayerPose& p, const char* what) {
   char buf[160];
   if (m > 1 && k > 0)
-    std::snprintf(buf, sizeof buf, "seq %u+%d/%d, %s %d%s%s", f.seq, k, m, p.side == Side::Left ? "left" : "right",
+    std::snprintf(buf, sizeof buf, "seq %u+%g/%d, %s %d%s%s", f.seq, k, m, p.side == Side::Left ? "left" : "right",
                   p.unum, what[0] ? ", " : "", what);
   else
     std::snprintf(buf, sizeof buf, "seq %u, %s %d%s%s", f.seq, p.side == Side::Left ? "left" : "right", p.unum,
@@ -158,7 +159,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
           lowest_here = std::min(lowest_here, low);
           if (low < r.lowest_m) {
             r.lowest_m = low;
-            r.lowest_where = who(f, k, m, pp, skel.joints[j].name.c_str());
+            r.lowest_where = who(f, at * m, m, pp, skel.joints[j].name.c_str());
           }
         }
         if (slides_over > 0 && lowest_here < -0.02f)
@@ -199,7 +200,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
           if (cf < 0) ++r.feet_close;
           if (cx < 0) ++r.crossed_close;
           if ((ct < 0 || cs < 0 || cf < 0) && r.clearance_worst_where.empty())
-            r.clearance_worst_where = who(f, k, m, pp, ct < 0 ? "thighs" : cs < 0 ? "shins" : "feet");
+            r.clearance_worst_where = who(f, at * m, m, pp, ct < 0 ? "thighs" : cs < 0 ? "shins" : "feet");
           float depth = 0;
           for (int s = 0; s < 2; ++s)
             for (int body : {rig.pelvis, rig.torso, rig.thigh[0], rig.thigh[1]}) {
@@ -212,7 +213,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
           if (depth > kHandDepthM) ++r.hands_inside;
           if (depth > r.hand_depth_max_m) {
             r.hand_depth_max_m = depth;
-            r.hand_worst_where = who(f, k, m, pp, "");
+            r.hand_worst_where = who(f, at * m, m, pp, "");
           }
         }
         // Frame-to-frame figures: only within one 20 Hz interval without a
@@ -264,7 +265,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
               r.grounded_worst_mps = v;
               char what[96];
               std::snprintf(what, sizeof what, "%s foot, root %.1f m/s", s == 0 ? "right" : "left", root_v);
-              r.grounded_worst_where = who(f, k, m, pp, what);
+              r.grounded_worst_where = who(f, at * m, m, pp, what);
             }
           }
           // Joint changes by group.
@@ -280,7 +281,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
           for (int gr = 0; gr < 4; ++gr) {
             if (step[gr] > worst_step[gr] || dist[gr]->values.empty()) {
               worst_step[gr] = step[gr];
-              *where[gr] = who(f, k, m, pp, skel.joints[static_cast<std::size_t>(worst[gr])].name.c_str());
+              *where[gr] = who(f, at * m, m, pp, skel.joints[static_cast<std::size_t>(worst[gr])].name.c_str());
             }
             dist[gr]->values.push_back(step[gr]);
           }
@@ -312,7 +313,7 @@ CloseUpReport measure_close_up(const StreamView& view, const std::vector<WorldSt
             if (slides_over > 0) std::fprintf(stderr, "float %.3f seq %u+%d slot %zu root %.1f m/s\n", low, f.seq, k, p, root_v);
             if (low > r.floating_max_m) {
               r.floating_max_m = low;
-              r.floating_where = who(f, k, m, pp, "");
+              r.floating_where = who(f, at * m, m, pp, "");
             }
           }
         }

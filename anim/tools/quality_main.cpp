@@ -145,6 +145,21 @@ bool write_picture(const Animated& a, const std::string& path) {
   return true;
 }
 
+void print_usage(const char* self) {
+  std::fprintf(stderr,
+               "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] "
+               "[--contact-sheet FILE] [--draw-rate HZ] [--draw-phase F] [--lookahead N] "
+               "[--detail none|run|kick|full] [--leg-blend none] LOG...\n",
+               self);
+}
+
+// A number that is the whole of `text` (strtod's, nothing after it).
+bool parse_number(const char* text, double& out) {
+  char* end = nullptr;
+  out = std::strtod(text, &end);
+  return end != text && *end == '\0';
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -162,7 +177,12 @@ int main(int argc, char** argv) {
     if (arg == "--png" && i + 1 < argc) png = argv[++i];
     else if (arg == "--contact-sheet" && i + 1 < argc) sheet = argv[++i];
     else if (arg == "--draw-rate" && i + 1 < argc) draw_rate = std::atoi(argv[++i]);
-    else if (arg == "--draw-phase" && i + 1 < argc) draw_phase = std::atof(argv[++i]);
+    else if (arg == "--draw-phase" && i + 1 < argc) {
+      if (!parse_number(argv[++i], draw_phase) || !(draw_phase >= 0.0 && draw_phase < 1.0)) {
+        std::fprintf(stderr, "%s: --draw-phase must be a number at least 0 and below 1, not '%s'\n", argv[0], argv[i]);
+        return 2;
+      }
+    }
     else if (arg == "--lookahead" && i + 1 < argc) cfg.lookahead_cycles = std::atoi(argv[++i]);
     else if (arg == "--mode" && i + 1 < argc && (std::string(argv[i + 1]) == "keyframe" || std::string(argv[i + 1]) == "mocap"))
       mode = argv[++i];
@@ -181,7 +201,7 @@ int main(int argc, char** argv) {
       }
       cfg.detail = *d;
     } else if (!arg.empty() && arg[0] == '-') {
-      std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--draw-phase F] [--lookahead N] [--detail none|run|kick|full] [--leg-blend none] LOG...\n", argv[0]);
+      print_usage(argv[0]);
       return 2;
     } else {
       logs.push_back(arg);
@@ -191,12 +211,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: --draw-rate must be a multiple of 20\n", argv[0]);
     return 2;
   }
-  if (!(draw_phase >= 0.0 && draw_phase < 1.0)) {
-    std::fprintf(stderr, "%s: --draw-phase must be at least 0 and below 1\n", argv[0]);
-    return 2;
-  }
   if (logs.empty()) {
-    std::fprintf(stderr, "usage: %s [--mode keyframe|mocap] [--compare] [--mocap-dir DIR] [--mocap-cache DIR] [--png FILE] [--contact-sheet FILE] [--draw-rate HZ] [--draw-phase F] [--lookahead N] [--detail none|run|kick|full] [--leg-blend none] LOG...\n", argv[0]);
+    print_usage(argv[0]);
     return 2;
   }
   // Mocap mode: the caller loads the clips, the animator stays pure.
