@@ -36,7 +36,8 @@ inline constexpr float kDrawnApartM = 0.005f;
 // `now`, `a`: this frame's root and angles (`a` changed in place).
 // `planted` ([0] right, [1] left): the feet on the grass at this frame,
 // whose legs stay as they are.
-// The blend is checked at kDrawnChecks points of the frame and at its end.
+// The blend is checked over the whole frame (kDrawnSteps points of it,
+// then a search between them), since a display draws it at any phase.
 // Where its legs come closer than kDrawnApartM, a leg in the air turns at
 // the hip, kDrawnStepDeg at a time up to kDrawnMostDeg: forward or back
 // (flexion), out (abduction), across (a leg crossed over the other one),
@@ -48,16 +49,15 @@ inline constexpr float kDrawnApartM = 0.005f;
 // or when a foot on the grass would be carried further over it. The first
 // turn that clears the blend, or else the one that leaves it clearest, is
 // kept. True when `a` changed.
-inline constexpr int kDrawnChecks = 5;  // t = 1/6, 2/6, ..., 5/6
-inline constexpr float kDrawnStepDeg = 2.0f;
+inline constexpr int kDrawnSteps = 6;  // t = 1/6, 2/6, ..., 1
+inline constexpr float kDrawnStepDeg = 4.0f;
 inline constexpr float kDrawnMostDeg = 32.0f;
 bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const proto::Quantizer* grid,
                            const PlayerPose& last, std::span<const float> last_angles, const DrawnRoot& now,
                            const bool planted[2], std::span<float> a);
 
 // The legs' least clearance (m; LegBlend::clearance) as the clients draw
-// the frame from `last` to `now`, `a`, at kDrawnChecks points of it and at
-// its end.
+// the frame from `last` to `now`, `a`, over the whole of it.
 float drawn_leg_clearance(const LegBlend& legs, const PlayerPose& last, const DrawnRoot& now,
                           std::span<const float> a);
 

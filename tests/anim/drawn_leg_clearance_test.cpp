@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <span>
@@ -47,12 +48,46 @@ PlayerPose pose(const std::array<float, dof::kCount>& a) {
 
 struct Case {
   LegBlend legs{human_skeleton()};
-  std::array<float, dof::kCount> last_angles = stride(12.0f, 12.0f);
+  std::array<float, dof::kCount> last_angles = stride(16.0f, 6.0f);
   PlayerPose last = pose(last_angles);
-  std::array<float, dof::kCount> a = stride(-12.0f, 12.0f);
+  std::array<float, dof::kCount> a = stride(-16.0f, 6.0f);
   DrawnRoot now{10.0f, -5.0f, kPelvisH, 30.0f};
   float drawn() const { return drawn_leg_clearance(legs, last, now, a); }
 };
+
+// The legs' least clearance as drawn at 600 points of the frame (the
+// clients' blend, proto/SPEC.md 4.7 step 1, then their step 2): what a
+// display shows, whatever its phase.
+float densely_drawn(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& pb) {
+  float least = INFINITY;
+  for (int n = 1; n <= 600; ++n) {
+    const float t = static_cast<float>(n) / 600.0f;
+    PlayerPose o = pa;
+    o.x += (pb.x - pa.x) * t;
+    o.y += (pb.y - pa.y) * t;
+    o.z += (pb.z - pa.z) * t;
+    o.heading += std::remainder(pb.heading - pa.heading, 360.0f) * t;
+    for (std::size_t k = 0; k < o.angles.size(); ++k) o.angles[k] += (pb.angles[k] - pa.angles[k]) * t;
+    legs.apply(pa, pb, t, o);
+    least = std::min(least, legs.clearance(o));
+  }
+  return least;
+}
+
+TEST(KeepLegsApartDrawn, TheDrawnClearanceIsTheLeastAnywhereInTheFrame) {
+  // Legs that pass each other at different speeds and places in the frame:
+  // the least clearance is found between the checked points too, within a
+  // millimetre of the dense one (a display may draw the frame at any phase).
+  for (const float flex : {8.0f, 12.0f, 20.0f, 30.0f})
+    for (const float in : {6.0f, 12.0f, 16.0f}) {
+      Case c;
+      c.last_angles = stride(flex, in);
+      c.last = pose(c.last_angles);
+      c.a = stride(-flex * 0.5f, in);
+      const float dense = densely_drawn(c.legs, c.last, pose(c.a));
+      EXPECT_NEAR(c.drawn(), dense, 0.001f) << flex << " " << in;
+    }
+}
 
 TEST(KeepLegsApartDrawn, LegsThatPassThroughEachOtherInTheBlendAreTurnedApartAtTheFrame) {
   Case c;
@@ -147,16 +182,16 @@ void expect_only(int moved, const std::array<float, dof::kCount>& a, const std::
 }
 
 TEST(KeepLegsApartDrawn, ASwingThatCrossesLowLiftsItsFootWithTheKnee) {
-  // From 28 deg back to 28 deg forward, adducted 16 deg (a step that
-  // crosses in front of the planted foot), the knee straightening from 20
-  // deg: half-way through, the swinging foot passes through the planted
-  // one. No turn of the hip clears it as well as bending the knee a little
-  // more at the frame, which lifts the foot as it passes.
-  RightSwing c(-28.0f, -20.0f, 28.0f, 0.0f, 16.0f, 1.0f);
+  // From 12 deg back to 32 deg forward, adducted 11 deg (a step that
+  // crosses in front of the planted foot), the knee bending from 20 deg
+  // to 30: two thirds of the way through, the swinging foot passes
+  // through the planted one. No turn of the hip clears it; bending the
+  // knee further at the frame lifts the foot as it passes.
+  RightSwing c(-12.0f, -20.0f, 32.0f, -30.0f, 11.0f, 1.0f);
   c.expect_crossing();
   const auto before = c.a;
   EXPECT_TRUE(c.keep_apart());
-  EXPECT_GE(c.drawn(), 0.0f);
+  EXPECT_GE(c.drawn(), kDrawnApartM);
   // The right knee bent further; nothing else moved.
   EXPECT_LT(c.a[dof::kRKnee], before[dof::kRKnee]);
   expect_only(dof::kRKnee, c.a, before);
@@ -165,12 +200,12 @@ TEST(KeepLegsApartDrawn, ASwingThatCrossesLowLiftsItsFootWithTheKnee) {
 }
 
 TEST(KeepLegsApartDrawn, ASwingPastThePlantedLegReachesLessFarAtTheFrame) {
-  // From 40 deg back, the knee bent 30 deg, to 20 deg forward and straight,
-  // adducted 16 deg: a third of the way through, the swinging leg passes
-  // through the planted one. Swung a little less far forward at the frame
-  // (hip flexion), the blend carries it past: no turn out, about its axis
-  // or of the knee clears it as well.
-  RightSwing c(-40.0f, -30.0f, 20.0f, 0.0f, 16.0f, 0.95f);
+  // From 40 deg back, the knee bent 40 deg, to 16 deg forward and
+  // straight, adducted 9 deg, the pelvis low (0.9 m): the swinging foot
+  // grazes the planted one. Swung less far forward at the frame (hip
+  // flexion), the blend carries it past: no turn out, about its axis or
+  // of the knee clears it.
+  RightSwing c(-40.0f, -40.0f, 16.0f, 0.0f, 9.0f, 0.9f);
   c.expect_crossing();
   const auto before = c.a;
   EXPECT_TRUE(c.keep_apart());
@@ -194,15 +229,17 @@ TEST(KeepLegsApartDrawn, TheKneeStaysWithinItsSpeedLimit) {
 }
 
 TEST(KeepLegsApartDrawn, TheTurnStaysWithinTheHipsSpeedLimit) {
-  // The right hip already turned 50 deg inwards since the frame before (as
-  // the joint speed limit measures it): turning it out would take it past
-  // the limit, so it is not turned out, however close the blend.
+  // The left hip already turned inwards since the frame before (as the
+  // joint speed limit measures it) a degree short of the limit the
+  // animator keeps legs apart by: turning it out, which would clear the
+  // blend, would take it past the limit, so it is not turned out.
   Case c;
-  c.last_angles[dof::kRHip + 1] = c.a[dof::kRHip + 1] + 50.0f;
+  c.last_angles[dof::kLHip] = c.a[dof::kLHip];
+  c.last_angles[dof::kLHip + 1] = c.a[dof::kLHip + 1] - (kMaxLegStepDeg + kSeparateAgainDeg - 1.0f);
   ASSERT_LT(hip_turning_too_fast(c.last_angles, c.a, kMaxLegStepDeg + kSeparateAgainDeg), 0);
   ASSERT_LT(c.drawn(), 0.0f);
-  const bool left_planted[2] = {false, true};
-  keep_legs_apart_drawn(c.legs, human_skeleton(), nullptr, c.last, c.last_angles, c.now, left_planted, c.a);
+  const bool right_planted[2] = {true, false};
+  keep_legs_apart_drawn(c.legs, human_skeleton(), nullptr, c.last, c.last_angles, c.now, right_planted, c.a);
   EXPECT_LT(hip_turning_too_fast(c.last_angles, c.a, kMaxLegStepDeg + kSeparateAgainDeg), 0);
 }
 
