@@ -184,9 +184,10 @@ void expect_only(int moved, const std::array<float, dof::kCount>& a, const std::
 TEST(KeepLegsApartDrawn, ASwingThatCrossesLowLiftsItsFootWithTheKnee) {
   // From 12 deg back to 32 deg forward, adducted 11 deg (a step that
   // crosses in front of the planted foot), the knee bending from 20 deg
-  // to 30: two thirds of the way through, the swinging foot passes
-  // through the planted one. No turn of the hip clears it; bending the
-  // knee further at the frame lifts the foot as it passes.
+  // to 30: from a tenth of the way to three quarters, the swinging foot
+  // passes through the planted one (3.3 cm at the deepest). No turn of the
+  // hip clears it; bending the knee further at the frame lifts the foot as
+  // it passes.
   RightSwing c(-12.0f, -20.0f, 32.0f, -30.0f, 11.0f, 1.0f);
   c.expect_crossing();
   const auto before = c.a;
@@ -201,10 +202,10 @@ TEST(KeepLegsApartDrawn, ASwingThatCrossesLowLiftsItsFootWithTheKnee) {
 
 TEST(KeepLegsApartDrawn, ASwingPastThePlantedLegReachesLessFarAtTheFrame) {
   // From 40 deg back, the knee bent 40 deg, to 16 deg forward and
-  // straight, adducted 9 deg, the pelvis low (0.9 m): the swinging foot
-  // grazes the planted one. Swung less far forward at the frame (hip
-  // flexion), the blend carries it past: no turn out, about its axis or
-  // of the knee clears it.
+  // straight, adducted 9 deg, the pelvis low (0.9 m): from 0.6 to 0.8 of
+  // the frame the swinging foot grazes the planted one (5 mm into it).
+  // Swung less far forward at the frame (hip flexion), the blend carries
+  // it past: no turn out, about its axis or of the knee clears it.
   RightSwing c(-40.0f, -40.0f, 16.0f, 0.0f, 9.0f, 0.9f);
   c.expect_crossing();
   const auto before = c.a;
@@ -220,8 +221,8 @@ TEST(KeepLegsApartDrawn, ASwingPastThePlantedLegReachesLessFarAtTheFrame) {
 TEST(KeepLegsApartDrawn, TheKneeStaysWithinItsSpeedLimit) {
   // A crossing swing from 28 deg back to 36 deg forward, adducted 12 deg,
   // its knee bent 50 deg more since the frame before (the joint speed
-  // limit): bending it further would clear the blend (to -88 deg), but
-  // faster than a knee may turn.
+  // limit): bending it further would leave the blend clearer than any
+  // other turn, but faster than a knee may turn.
   RightSwing c(-28.0f, -10.0f, 36.0f, -10.0f - kMaxLegStepDeg, 12.0f, 1.0f);
   ASSERT_LT(c.drawn(), 0.0f);
   c.keep_apart();
