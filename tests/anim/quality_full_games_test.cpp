@@ -273,11 +273,11 @@ constexpr Bounds kAt20Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 
 // points), not at five points of it, and turns a leg 4 degrees at a time
 // (anim/drawn_leg_clearance.cpp, 2026-11-29): summed over eight phases of
 // the display (0, 0.1, 0.25, 0.35, 0.5, 0.6, 0.75, 0.85) too close 95 and 78
-// -> 12 and 33 player-frames (game 2's thighs 16 -> 20, mostly seq 496,
-// which no turn within the bounds clears), ankle pops 3/0 -> 0/0; but at
-// these points,
-// which the old check sampled, 0/0/0 and 1/0/0 -> 0/1/0 and 2/0/1 (the old
-// figure here was the favoured phase's). Bounds: 1/0/0 -> 2/1/1.
+// -> 12 and 33 player-frames (game 2's thighs 16 -> 20, the worst at
+// seven phases seq 496, which no turn within the bounds clears), ankle
+// pops 3/0 -> 0/0; but at these points, which the old check sampled,
+// 0/0/0 and 1/0/0 -> 0/1/0 and 2/0/1 (the old figure here was the
+// favoured phase's). Bounds: 1/0/0 -> 2/1/1.
 constexpr Bounds kAt60Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 2, 1, 1, 0, 150, 0.02, 4.5,
                          -0.02, 0.31};
 
