@@ -13,13 +13,12 @@ namespace mc::anim {
 namespace {
 
 // Below this clearance of the plain blend (angles only, before the
-// clients' step) at 1/kGateChecks ... of the frame, the clients' step is
-// run to see what they draw. Run on every frame, the check cost a third of
+// clients' step) at the check's own points (1/kDrawnSteps ... of the
+// frame), the clients' step is run to see what they draw. Run on every frame, the check cost a third of
 // the animation's instructions; with no gates at all the figures are the
 // same, with 1 cm (and kMidGateM 8 cm) legs too close at 60 Hz went 56 ->
 // 119 player-frames over eight phases of the display (anim/README.md).
 constexpr float kGateM = 0.025f;
-constexpr int kGateChecks = 6;
 // Half-way first: legs this far apart there are not checked further (10 cm
 // let one more case through on each full game).
 constexpr float kMidGateM = 0.12f;
@@ -178,8 +177,7 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
   PlayerPose pb = pose_of(now, a);
   if (legs.clearance(blend_of(last, pb, 0.5f)) >= kMidGateM) return false;
   float plain = INFINITY;
-  for (int n = 1; n < kGateChecks; ++n)
-    plain = std::min(plain, legs.clearance(blend_of(last, pb, static_cast<float>(n) / kGateChecks)));
+  for (int n = 1; n < kDrawnSteps; ++n) plain = std::min(plain, legs.clearance(blend_of(last, pb, step_t(n))));
   if (plain >= kGateM) return false;
   const PlayerPose pa = grid != nullptr ? as_streamed(*grid, last) : last;
   const Drawn before = drawn_frame(legs, pa, pb);
