@@ -4,8 +4,12 @@
 #include <array>
 #include <cmath>
 
+#include "anim/grid_rounding.hpp"
+#include "anim/ground_contact.hpp"
+#include "anim/human_skeleton.hpp"
 #include "anim/joint_limits.hpp"
 #include "anim/limb_clearance.hpp"
+#include "anim/local_to_model_job.hpp"
 #include "anim/player_animation.hpp"
 #include "anim/portable_math.hpp"
 
@@ -27,6 +31,9 @@ constexpr float kMidGateM = 0.12f;
 constexpr float kStillDeg = 10.0f;
 // How much further a turned leg may carry a foot over the grass (m a frame).
 constexpr float kSlideSlackM = 0.02f;
+// A turned thigh keeps its own side's hand this far out (m, negative:
+// outside), as keep_hands_off_thighs keeps it in the clients' blend.
+constexpr float kHandOffM = -0.01f;
 // The least clearance is searched for between the steps where the nearest
 // step is closer than this (m): the nearest point may be half a step (1/12
 // of the frame) from it, and legs passing at 0.5 m a frame close 4 cm in
@@ -163,7 +170,7 @@ PlayerPose as_streamed(const proto::Quantizer& grid, const PlayerPose& pose) {
 
 bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const proto::Quantizer* grid,
                            const PlayerPose& last, std::span<const float> last_angles, const DrawnRoot& now,
-                           const bool planted[2], std::span<float> a) {
+                           const bool planted[2], std::span<float> a, bool turned) {
   if (!legs.ready() || (planted[0] && planted[1])) return false;
   // Most frames need no more: legs that hardly turn (a player standing or
   // walking slowly) are drawn as they are at the frames, which keep apart
@@ -180,41 +187,83 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
   for (int n = 1; n < kDrawnSteps; ++n) plain = std::min(plain, legs.clearance(blend_of(last, pb, step_t(n))));
   if (plain >= kGateM) return false;
   const PlayerPose pa = grid != nullptr ? as_streamed(*grid, last) : last;
-  const Drawn before = drawn_frame(legs, pa, pb);
+  // A turn that clears is drawn once more as the stream will carry the
+  // frame: rounded by the animator (grid_rounding.hpp, which may move a hip
+  // 0.99 deg to keep an ankle in place) and then by the encoder. It counts
+  // as clear only if that clears too: legs cleared unrounded by 5 mm came
+  // back 1 cm inside (game 2 seq 13659). The turns are still searched
+  // unrounded (searched rounded, the 4-degree steps lose their effect in
+  // the rounding: legs too close at eight phases of the display 12 / 33 ->
+  // 24 / 59 player-frames). A frame that needs no turn is drawn again only
+  // when this check turned it before (`turned`: resting it on the grass
+  // since may have changed its rounding); every frame drawn again cost
+  // 5.5 % of the animation (anim/README.md).
+  std::array<glm::mat4, kHumanJointCount> models{};
+  auto as_sent = [&](Drawn d, const PlayerPose& p) {
+    if (grid == nullptr || d.beaten || d.clearance < kDrawnApartM) return d;
+    PlayerPose q = p;
+    LocalToModelJob fk{&skel, std::span<const float>(q.angles.data(), dof::kCount), glm::vec3(0, q.z, 0), models};
+    fk.joint_mask = kLegJoints;
+    if (fk.Run()) round_legs_to_grid(*grid, skel, models.data(), q);
+    d.clearance = std::min(d.clearance, drawn_frame(legs, pa, as_streamed(*grid, q)).clearance);
+    return d;
+  };
+  const Drawn before = turned ? as_sent(drawn_frame(legs, pa, pb), pb) : drawn_frame(legs, pa, pb);
   if (before.clearance >= kDrawnApartM) return false;
   float best = before.clearance, worst_at = before.at;
   std::array<float, dof::kCount> best_a{}, cand{};
   // The frame itself may come no closer than it was, or than the margin
   // (the next frame's blend starts from it).
   const float frame_floor = std::min(legs.clearance(pb), kDrawnApartM);
-  // Leg `side`'s dof `k` (the hip's or the knee's) turned by `way`
-  // kDrawnStepDeg at a time, until the blend clears or a bound stops it.
+  float hand_before[2] = {NAN, NAN};  // hand_depth_in_thigh of `a`, per side, when first needed
+  enum class Tried { Kept, Passed, Cleared, Refused, AtLimit };
+  // Leg `side`'s dof `k` (the hip's or the knee's) turned by `turn` deg.
+  auto try_turn = [&](int side, std::size_t k, float turn) {
+    std::copy_n(a.begin(), dof::kCount, cand.begin());
+    cand[k] += turn;
+    clamp_to_limits(skel, cand);
+    if (cand[k] == a[k]) return Tried::AtLimit;
+    // Each joint within its own speed limit: the hip's three dofs as one
+    // rotation, the knee's one angle.
+    const bool knee = k == static_cast<std::size_t>(dof::kRKnee) || k == static_cast<std::size_t>(dof::kLKnee);
+    if (knee ? std::fabs(cand[k] - last_angles[k]) > kMaxLegStepDeg
+             : hip_turning_too_fast(last_angles, cand, kMaxLegStepDeg + kSeparateAgainDeg, side) >= 0)
+      return Tried::Refused;
+    std::copy_n(cand.begin(), dof::kCount, pb.angles.begin());
+    if (legs.clearance(pb) < frame_floor) return Tried::Refused;
+    // A turn no clearer than the best so far is passed over (a larger one
+    // may still be).
+    const Drawn d = as_sent(drawn_frame(legs, pa, pb, best, worst_at), pb);
+    if (d.beaten) return Tried::Passed;
+    // No ankle pops where there were none (nor worse ones), and no foot
+    // on the grass carried over it further.
+    for (int i = 0; i < 2; ++i)
+      if (d.pop[i] > std::max(1.0f, before.pop[i]) || d.slide[i] > before.slide[i] + kSlideSlackM) return Tried::Refused;
+    // Cleared unrounded, but as sent no clearer than the best so far.
+    if (d.clearance <= best) return Tried::Passed;
+    // Nor a thigh turned into its own side's hand, which the arm was held
+    // out of before this check (keep_hands_off_thighs; game 1 seq 2491, a
+    // runner's hand 5.5 cm inside his thigh).
+    if (std::isnan(hand_before[side])) hand_before[side] = hand_depth_in_thigh(skel, a, last_angles, side);
+    if (hand_depth_in_thigh(skel, cand, last_angles, side) > std::max(kHandOffM, hand_before[side]))
+      return Tried::Refused;
+    best = d.clearance;
+    worst_at = d.at;
+    best_a = cand;
+    return d.clearance >= kDrawnApartM ? Tried::Cleared : Tried::Kept;
+  };
+  // The same dof turned by `way` kDrawnStepDeg at a time, until the blend
+  // clears or a bound stops it. A step refused (a joint too fast, the
+  // frame's own legs closer, an ankle popping or a foot carried over the
+  // grass) is tried once more at half its size, as the largest turn the
+  // bounds allow is often between two steps: game 2 seq 496, a sprinter's
+  // thigh past the planted one, 4 degrees out popped the ankle by 4 %, and
+  // 2 degrees let the next try clear it (anim/README.md).
   auto turn_dof = [&](int side, std::size_t k, float way) {
     for (float turn = kDrawnStepDeg; turn <= kDrawnMostDeg + 1e-3f; turn += kDrawnStepDeg) {
-      std::copy_n(a.begin(), dof::kCount, cand.begin());
-      cand[k] += turn * way;
-      clamp_to_limits(skel, cand);
-      if (cand[k] == a[k]) return;  // at its limit
-      // Each joint within its own speed limit: the hip's three dofs as one
-      // rotation, the knee's one angle.
-      const bool knee = k == static_cast<std::size_t>(dof::kRKnee) || k == static_cast<std::size_t>(dof::kLKnee);
-      if (knee ? std::fabs(cand[k] - last_angles[k]) > kMaxLegStepDeg
-               : hip_turning_too_fast(last_angles, cand, kMaxLegStepDeg + kSeparateAgainDeg, side) >= 0)
-        return;
-      std::copy_n(cand.begin(), dof::kCount, pb.angles.begin());
-      if (legs.clearance(pb) < frame_floor) return;
-      // A turn no clearer than the best so far is passed over (a larger one
-      // may still be).
-      const Drawn d = drawn_frame(legs, pa, pb, best, worst_at);
-      if (d.beaten) continue;
-      // No ankle pops where there were none (nor worse ones), and no foot
-      // on the grass carried over it further.
-      for (int i = 0; i < 2; ++i)
-        if (d.pop[i] > std::max(1.0f, before.pop[i]) || d.slide[i] > before.slide[i] + kSlideSlackM) return;
-      best = d.clearance;
-      worst_at = d.at;
-      best_a = cand;
-      if (d.clearance >= kDrawnApartM) return;
+      const Tried r = try_turn(side, k, turn * way);
+      if (r == Tried::Refused) try_turn(side, k, (turn - 0.5f * kDrawnStepDeg) * way);
+      if (r == Tried::Refused || r == Tried::Cleared || r == Tried::AtLimit) return;
     }
   };
   // A leg in the air swings forward or back (flexion), which carries its

@@ -172,6 +172,21 @@ void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::spa
   }
 }
 
+float hand_depth_in_thigh(const SkeletonDef& skel, std::span<const float> a, std::span<const float> last, int side,
+                          float far) {
+  std::array<glm::mat4, kHumanJointCount> m;
+  if (!pose_hands(skel, a, m, kSideJoints[side])) return -far;
+  float depth = hand_in_thigh(skel, m, side, -far);
+  if (last.size() == a.size() && a.size() == static_cast<std::size_t>(dof::kCount)) {
+    std::array<float, dof::kCount> between{};
+    for (const float t : {1.0f / 3.0f, 2.0f / 3.0f}) {
+      for (std::size_t d = 0; d < between.size(); ++d) between[d] = last[d] + (a[d] - last[d]) * t;
+      if (pose_hands(skel, between, m, kSideJoints[side])) depth = std::max(depth, hand_in_thigh(skel, m, side, -far));
+    }
+  }
+  return depth;
+}
+
 // Legs keep out of each other: the thighs' and the shins' centre lines
 // (capsules of the boxes' half widths, plus a margin for the stream's
 // quantization) stay apart. A leg in the air is turned out at the hip

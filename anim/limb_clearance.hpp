@@ -32,6 +32,14 @@ float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards);
 // pose's angles (deg), changed in place.
 void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::span<const float> last = {});
 
+// How deep (m, negative: outside) side `side`'s hand (0 right, 1 left) is
+// in its own side's thigh: in the pose `a` and, given the frame before
+// (`last`, the same size), at a third and two thirds of the clients' blend
+// from it, the deepest of the three. Read only to -`far` m: a hand further
+// out reads -`far`.
+float hand_depth_in_thigh(const SkeletonDef& skel, std::span<const float> a, std::span<const float> last, int side,
+                          float far = 0.08f);
+
 // The legs' centre lines (thighs, shins, feet) keep half a box width apart
 // plus a margin: a leg in the air is turned out at the hip (with both in
 // the air, the one further across the body's midline). True when a leg

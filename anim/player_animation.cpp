@@ -544,12 +544,15 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     }
   }
   // Nor do the legs pass through each other as the clients draw the frame
-  // (drawn_leg_clearance.hpp). Resting on the grass again may level a
-  // foot in the air into the other one: then the step runs again.
-  if (in.drawn_legs != nullptr && !in.reset && ctx.ankles.valid && rested && own_feet && !contact) {
+  // (drawn_leg_clearance.hpp), in a whole-body action (a tackle, a dive)
+  // too: the clients blend its frames as any others (game 1 seq 5496, legs
+  // through each other at 60 Hz on three of eight phases of the display).
+  // Resting on the grass again may level a foot in the air into the other
+  // one: then the step runs again.
+  if (in.drawn_legs != nullptr && !in.reset && ctx.ankles.valid && rested && !contact) {
     for (int k = 0; k < kDrawnApartTries; ++k) {
       if (!keep_legs_apart_drawn(*in.drawn_legs, limits_from, in.grid, ctx.last_sent, ctx.last_angles,
-                                 DrawnRoot{px, py, pelvis_h, heading}, lo.planted, a))
+                                 DrawnRoot{px, py, pelvis_h, heading}, lo.planted, a, k > 0))
         break;
       rest_on_grass(8.0f);
     }

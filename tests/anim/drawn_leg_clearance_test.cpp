@@ -14,15 +14,26 @@
 #include <cmath>
 #include <span>
 
+#include "anim/grid_rounding.hpp"
+#include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
+#include "anim/local_to_model_job.hpp"
 #include "anim/leg_blend.hpp"
 #include "anim/limb_clearance.hpp"
 #include "anim/player_animation.hpp"
+#include "proto/quantizer.hpp"
 
 namespace mc::anim {
 namespace {
 
 constexpr float kPelvisH = 1.05f;  // feet off the grass: a flight phase
+
+// The arms held out from the body, as the animator holds them clear of the
+// thighs (keep_hands_off_thighs), so that a thigh turned out keeps off them.
+void arms_out(std::array<float, dof::kCount>& a) {
+  a[dof::kRShoulder + 1] = -20.0f;  // the right arm abducts towards -X
+  a[dof::kLShoulder + 1] = 20.0f;
+}
 
 // A stride with both legs swung in towards the midline (each hip adducted
 // `in` deg): the right leg from `flex` deg forward to as far back, the left
@@ -33,6 +44,7 @@ std::array<float, dof::kCount> stride(float flex, float in) {
   a[dof::kRHip + 1] = in;  // the right leg adducts towards +X
   a[dof::kLHip] = -flex;
   a[dof::kLHip + 1] = -in;  // the left towards -X
+  arms_out(a);
   return a;
 }
 
@@ -153,6 +165,8 @@ struct RightSwing {
     a[dof::kRHip] = to;
     a[dof::kRHip + 1] = in;
     a[dof::kRKnee] = knee_to;
+    arms_out(last_angles);
+    arms_out(a);
     last = at(last_angles);
   }
   PlayerPose at(const std::array<float, dof::kCount>& q) const {
@@ -218,6 +232,38 @@ TEST(KeepLegsApartDrawn, ASwingPastThePlantedLegReachesLessFarAtTheFrame) {
   EXPECT_LT(hip_turning_too_fast(c.last_angles, c.a, kMaxLegStepDeg + kSeparateAgainDeg), 0);
 }
 
+// `p` as the stream carries it: rounded by the animator as it sends a
+// frame (grid_rounding.hpp) and then by the encoder.
+PlayerPose as_sent(const proto::Quantizer& grid, PlayerPose p) {
+  std::array<glm::mat4, kHumanJointCount> models{};
+  LocalToModelJob fk{&human_skeleton(), std::span<const float>(p.angles.data(), dof::kCount), glm::vec3(0, p.z, 0),
+                     models};
+  fk.joint_mask = kLegJoints;
+  EXPECT_TRUE(fk.Run());
+  round_legs_to_grid(grid, human_skeleton(), models.data(), p);
+  return as_streamed(grid, p);
+}
+
+TEST(KeepLegsApartDrawn, TheFrameIsClearedAsTheStreamCarriesIt) {
+  // The knee's crossing swing, adducted 10 deg. The turn that clears the
+  // unrounded frame by 7.6 mm leaves the frame the clients receive, its
+  // hip and knee rounded to the stream's 0.99-deg grid so as to keep the
+  // ankle (grid_rounding.hpp), 1.2 mm through the planted leg: the check
+  // turns on until that frame clears too.
+  const proto::Quantizer grid(human_skeleton());
+  RightSwing c(-12.0f, -20.0f, 32.0f, -30.0f, 10.0f, 1.0f);
+  c.last = as_sent(grid, c.last);  // the last frame went out rounded
+  std::copy_n(c.last.angles.begin(), dof::kCount, c.last_angles.begin());
+  c.expect_crossing();
+  const bool left_planted[2] = {false, true};
+  EXPECT_TRUE(keep_legs_apart_drawn(c.legs, human_skeleton(), &grid, c.last, c.last_angles, c.now, left_planted, c.a));
+  EXPECT_GE(c.drawn(), kDrawnApartM);
+  const PlayerPose sent = as_sent(grid, c.at(c.a));
+  EXPECT_GE(drawn_leg_clearance(c.legs, c.last, DrawnRoot{sent.x, sent.y, sent.z, sent.heading},
+                                std::span<const float>(sent.angles.data(), dof::kCount)),
+            kDrawnApartM);
+}
+
 TEST(KeepLegsApartDrawn, TheKneeStaysWithinItsSpeedLimit) {
   // A crossing swing from 28 deg back to 36 deg forward, adducted 12 deg,
   // its knee bent 50 deg more since the frame before (the joint speed
@@ -242,6 +288,47 @@ TEST(KeepLegsApartDrawn, TheTurnStaysWithinTheHipsSpeedLimit) {
   const bool right_planted[2] = {true, false};
   keep_legs_apart_drawn(c.legs, human_skeleton(), nullptr, c.last, c.last_angles, c.now, right_planted, c.a);
   EXPECT_LT(hip_turning_too_fast(c.last_angles, c.a, kMaxLegStepDeg + kSeparateAgainDeg), 0);
+}
+
+TEST(KeepLegsApartDrawn, AStepABoundRefusesIsTriedAtHalfItsSize) {
+  // As above, the left hip three degrees short of its limit, so that no
+  // turn out is allowed (a whole step is 4 deg) and the knee is what
+  // helps: bent 4, 8, 12, 16 deg the blend grows clearer each time; at 20
+  // its ankle would pop as drawn. Half that step, 18 deg, does not, and
+  // leaves the blend clearer than 16 deg would.
+  Case c;
+  c.last_angles[dof::kLHip] = c.a[dof::kLHip];
+  c.last_angles[dof::kLHip + 1] = c.a[dof::kLHip + 1] - (kMaxLegStepDeg + kSeparateAgainDeg - 3.0f);
+  auto out = c.a;
+  out[dof::kLHip + 1] += kDrawnStepDeg;
+  ASSERT_GE(hip_turning_too_fast(c.last_angles, out, kMaxLegStepDeg + kSeparateAgainDeg), 0);
+  const auto before = c.a;
+  auto whole_steps = c.a;
+  whole_steps[dof::kLKnee] -= 4.0f * kDrawnStepDeg;
+  const float after_whole_steps = drawn_leg_clearance(c.legs, c.last, c.now, whole_steps);
+  ASSERT_LT(after_whole_steps, 0.0f);
+  const bool right_planted[2] = {true, false};
+  EXPECT_TRUE(keep_legs_apart_drawn(c.legs, human_skeleton(), nullptr, c.last, c.last_angles, c.now, right_planted, c.a));
+  EXPECT_EQ(c.a[dof::kLKnee], before[dof::kLKnee] - 4.5f * kDrawnStepDeg);
+  expect_only(dof::kLKnee, c.a, before);
+  EXPECT_GT(c.drawn(), after_whole_steps);
+}
+
+TEST(KeepLegsApartDrawn, AThighIsNotTurnedIntoItsOwnHand) {
+  // The first case with the arms hanging at the sides: the left hand
+  // close by the left thigh, which a turn out would take into it.
+  Case c;
+  for (auto* q : {&c.a, &c.last_angles}) {
+    (*q)[dof::kRShoulder + 1] = 0.0f;
+    (*q)[dof::kLShoulder + 1] = 0.0f;
+  }
+  c.last = pose(c.last_angles);
+  const float hand_before = hand_depth_in_thigh(human_skeleton(), c.a, c.last_angles, 1);
+  ASSERT_GT(hand_before, -0.06f);  // closer than keep_hands_off_thighs leaves it
+  ASSERT_LT(c.drawn(), 0.0f);
+  const bool right_planted[2] = {true, false};
+  keep_legs_apart_drawn(c.legs, human_skeleton(), nullptr, c.last, c.last_angles, c.now, right_planted, c.a);
+  EXPECT_LE(hand_depth_in_thigh(human_skeleton(), c.a, c.last_angles, 1), std::max(-0.01f, hand_before));
 }
 
 }  // namespace
