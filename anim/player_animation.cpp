@@ -13,6 +13,7 @@
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/joint_limits.hpp"
+#include "anim/joint_speed_limit.hpp"
 #include "anim/kick_reach.hpp"
 #include "anim/leg_pose_job.hpp"
 #include "anim/limb_clearance.hpp"
@@ -65,37 +66,6 @@ void planted_target(const FootState& f, const BodyFrame& body, FootTarget& t) {
   t.ankle_ms[1] = ah;
   t.yaw_deg = -delta_deg(f.yaw, body.heading);
   t.pitch_deg = f.pitch;
-}
-
-// Scales each joint's change since `last` down to at most its group's
-// limit per frame (kMaxKickLegStepDeg for the leg of `kicking_foot`, 0
-// right, 1 left, -1 none); `limited` gets the joints it held back. A joint whose
-// dofs moved by less than the limit in total cannot have rotated further
-// (each elementary rotation adds at most its own angle), so only the others
-// are measured.
-void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<float> a, bool limited[kHumanJointCount],
-                       int kicking_foot) {
-  const std::size_t kick_thigh = kicking_foot == 0 ? kRThigh : kLThigh;
-  std::size_t k = 0;
-  for (std::size_t j = 0; j < skel.joints.size() && j < kHumanJointCount; ++j) {
-    const JointDef& jd = skel.joints[j];
-    const std::size_t n = jd.dofs.size();
-    const bool kicking = kicking_foot >= 0 && j >= kick_thigh && j < kick_thigh + 3;  // thigh, shin, foot
-    const float cap = kicking ? kMaxKickLegStepDeg : j >= kRThigh ? kMaxLegStepDeg : kMaxUpperStepDeg;
-    limited[j] = false;
-    float sum = 0;
-    for (std::size_t d = 0; d < n; ++d) sum += std::fabs(a[k + d] - last[k + d]);
-    if (sum > cap) {
-      for (int pass = 0; pass < 3; ++pass) {
-        const float ang = rotation_between(jd.dofs, last + k, &a[k]);
-        if (ang <= cap) break;
-        const float scale = (cap - 0.1f) / ang;
-        for (std::size_t d = 0; d < n; ++d) a[k + d] = last[k + d] + (a[k + d] - last[k + d]) * scale;
-        limited[j] = true;
-      }
-    }
-    k += n;
-  }
 }
 
 }  // namespace
