@@ -98,6 +98,7 @@ float reach_ball_with_hip(const SkeletonDef& skel, std::span<const float> last, 
   const Segment& seg = skel.joints[static_cast<std::size_t>(foot)].segment;
   std::array<glm::mat4, kHumanJointCount> m;
   float gap = 0;
+  bool sunk = false;
   for (int it = 0; it < 3; ++it) {
     LocalToModelJob fk{&skel, std::span<const float>(a.data(), a.size()), glm::vec3(0, pelvis_h, 0), m};
     fk.joint_mask = kLegJoints;
@@ -107,7 +108,10 @@ float reach_ball_with_hip(const SkeletonDef& skel, std::span<const float> last, 
     glm::vec3 n_local;
     const float dist = box_distance(seg, glm::transpose(rot) * (ball_ms - glm::vec3(fm[3])), &n_local);
     gap = dist - ball_r;
-    if (gap <= gap_m + 0.001f) break;
+    // Short of the ball: on to it. Sunk deeper than kDeepInBallM: out to
+    // the gap. Else left.
+    if (it == 0) sunk = gap < -kDeepInBallM;
+    if (sunk ? gap >= gap_m - 0.001f : gap <= gap_m + 0.001f) break;
     // The box's point nearest the ball, and where it should be.
     const glm::vec3 n = rot * n_local;
     const glm::vec3 near = ball_ms - n * dist;

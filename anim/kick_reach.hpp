@@ -5,7 +5,7 @@
 // short of the straight leg the IK asked for, and the foot with it. What
 // the knee cannot do the hip can: the whole leg turns about the hip,
 // within the hip's own turn and limits, until the foot's box is on the
-// ball. Human skeleton only (human_skeleton.hpp); no I/O.
+// ball, neither short of it nor in it. Human skeleton only (human_skeleton.hpp); no I/O.
 #pragma once
 
 #include <span>
@@ -31,8 +31,16 @@ inline constexpr float kContactGapM = 0.004f;
 void touch_ball(const SkeletonDef& skel, const BodyFrame& body, float& pelvis_h, const ActionSample& act, int k,
                 LegPoseJob& legs, std::span<float> a);
 
+// A foot deeper than this in the ball (m) is turned back out to the
+// contact gap too: the ankle the limit held short of its pitch can bring
+// the box's heel or toe into the ball (game 1 seq 7817, 2.0 cm deep, a
+// sole levelled out of the grass on the frame before). Shallower, it is
+// within the stream's quantization and left.
+inline constexpr float kDeepInBallM = 0.01f;
+
 // Turns kicking leg `k` ([0] right, [1] left) about its hip so that its
-// foot's box comes `gap_m` off the ball (centre `ball_ms` in body space,
+// foot's box comes `gap_m` off the ball (from further off, or from deeper
+// in than kDeepInBallM) (centre `ball_ms` in body space,
 // radius `ball_r`), keeping the hip within `cap_deg` of its angles in
 // `last` (deg, the last frame) and within its limits. `a`: the pose's
 // angles (deg), changed in place; `pelvis_h`: the pelvis joint's height.

@@ -453,8 +453,8 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       const int j0 = i == 0 ? kRThigh : kLThigh;
       if (lo.planted[i] && (limited[j0] || limited[j0 + 1] || limited[j0 + 2])) ctx.loco.feet[i].release = true;
     }
-    // A kicking leg the limit held short of the ball reaches it with the
-    // hip (kick_reach.hpp): a knee bent 79 deg the frame before left game 1
+    // A kicking leg the limit held short of the ball, or in it, meets it
+    // with the hip (kick_reach.hpp): a knee bent 79 deg the frame before left game 1
     // seq 10697's foot 6 cm short.
     if (contact) {
       const int j0 = act->kick_foot == 0 ? kRThigh : kLThigh;

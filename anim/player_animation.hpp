@@ -83,6 +83,16 @@ inline constexpr float kMaxTurnPerFrameDeg = 12.0f;
 // deg/s (a sprinter's knee), arms, trunk, neck and head 760 deg/s. Issue 23's
 // limits are 60 and 45; the margin covers the stream's quantization.
 inline constexpr float kMaxLegStepDeg = 50.0f;
+// The knee alone may turn further: at 50 deg it held a sprinter's swing
+// knee short of folding after toe-off, and the foot, behind a leg still
+// nearly straight, hung a few centimetres over the grass while it
+// travelled 0.5-0.8 m (game 1 seq 7525, right 10: 4 mm up): a foot that
+// slides, at 20 Hz and in the clients' blend. 56 deg (1 120 deg/s, 12 %
+// over the figure above) took game 1's 60 Hz grounded-foot band of 8-9
+// m/s at the display's phases 0.35-0.75 from 0.52-0.54 to 0.47-0.51 m/s,
+// and the 9+ band at all eight from 0.44-0.52 to 0.40-0.48 (anim/README.md,
+// "A knee's own speed"); a leg's largest turn stays under issue 23's 60.
+inline constexpr float kMaxKneeStepDeg = 56.0f;
 // The kicking leg on its contact frame: a kick is a leg's fastest motion
 // (knee extension near impact 1,500-2,300 deg/s in instep kicks, the
 // studies reviewed by Lees & Nolan 1998, J Sports Sci 16:211). Held at the

@@ -1,6 +1,7 @@
 // limit_joint_speed: a joint that turns further than its group's limit
 // since the last frame is scaled back along its own turn to within it;
-// the others, and a kicking leg within the kick's higher limit, are left.
+// the others, a kicking leg within the kick's higher limit and a knee
+// within its own, are left.
 #include "anim/joint_speed_limit.hpp"
 
 #include <gtest/gtest.h>
@@ -52,6 +53,25 @@ TEST(JointSpeedLimit, TheKickingLegHasTheKicksLimitAndAnArmItsOwn) {
   limit_joint_speed(human_skeleton(), last.data(), a, limited, -1);
   EXPECT_TRUE(limited[kRThigh]);
   EXPECT_LE(a[dof::kRHip], kMaxLegStepDeg);
+}
+
+TEST(JointSpeedLimit, AKneeFoldsFasterThanTheRestOfTheLeg) {
+  // A swing knee folding 54 deg after toe-off keeps its turn; the hip the
+  // same 54 deg is held to the leg's limit, and a knee past its own is held.
+  std::array<float, dof::kCount> last{}, a{};
+  a[dof::kRKnee] = -54.0f;
+  a[dof::kLHip] = 54.0f;
+  bool limited[kHumanJointCount] = {};
+  limit_joint_speed(human_skeleton(), last.data(), a, limited, -1);
+  EXPECT_FALSE(limited[kRShin]);
+  EXPECT_EQ(a[dof::kRKnee], -54.0f);
+  EXPECT_TRUE(limited[kLThigh]);
+  EXPECT_LE(a[dof::kLHip], kMaxLegStepDeg);
+  a[dof::kRKnee] = -(kMaxKneeStepDeg + 6.0f);
+  limit_joint_speed(human_skeleton(), last.data(), a, limited, -1);
+  EXPECT_TRUE(limited[kRShin]);
+  EXPECT_GE(a[dof::kRKnee], -kMaxKneeStepDeg);
+  EXPECT_LT(a[dof::kRKnee], -(kMaxKneeStepDeg - 1.0f));
 }
 
 }  // namespace

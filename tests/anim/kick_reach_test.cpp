@@ -88,5 +88,28 @@ TEST(KickReach, AFootAlreadyOnTheBallIsLeftAlone) {
   EXPECT_EQ(k.a, before);
 }
 
+TEST(KickReach, AFootHeldInTheBallIsTurnedOutOfIt) {
+  HeldKick k;
+  k.ball -= glm::normalize(k.ball - glm::vec3(posed(k.a)[kRFoot][3])) * 0.09f;  // 3 cm into it
+  const std::array<float, kMaxDof> before = k.a;
+  ASSERT_LT(gap_to(k.a, k.ball), -0.025f);
+  reach_ball_with_hip(human_skeleton(), before, kPelvisH, k.ball, kBallR, 0, kGap, 57.0f, k.a);
+  EXPECT_NEAR(gap_to(k.a, k.ball), kGap, 0.003f);
+  for (int d = 0; d < dof::kCount; ++d)
+    if (d < dof::kRHip || d > dof::kRHip + 2) {
+      EXPECT_EQ(k.a[static_cast<std::size_t>(d)], before[static_cast<std::size_t>(d)]) << d;
+    }
+}
+
+TEST(KickReach, AFootWithinTheQuantizationOfTheBallIsLeftAlone) {
+  HeldKick k;
+  k.ball -= glm::normalize(k.ball - glm::vec3(posed(k.a)[kRFoot][3])) * 0.065f;  // 5 mm into it
+  const std::array<float, kMaxDof> before = k.a;
+  ASSERT_LT(gap_to(k.a, k.ball), 0.0f);
+  ASSERT_GT(gap_to(k.a, k.ball), -kDeepInBallM);
+  reach_ball_with_hip(human_skeleton(), before, kPelvisH, k.ball, kBallR, 0, kGap, 57.0f, k.a);
+  EXPECT_EQ(k.a, before);
+}
+
 }  // namespace
 }  // namespace mc::anim
