@@ -278,10 +278,15 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // air may travel with the body (swing_clear).
   const float root_step = ctx.ankles.valid ? pm::hypot(in.x - ctx.ankles.pelvis.x, in.y - ctx.ankles.pelvis.y) : 0.0f;
   // A foot in the air keeps off the grass as it travels (swing_clearance.hpp):
-  // not a kick's foot, nor under a whole-body action.
+  // not a kick's foot up to its contact, nor under a whole-body action. After
+  // the contact the kicking foot follows through and comes down beside a body
+  // that runs on: left to the kick's keys, it came down low over the grass at
+  // the body's speed (game 1 at 60 Hz, phase 0.5: 9 % of the 8-9 m/s band's
+  // sliding, anim/README.md "A knee's own speed").
   if (own_feet && !in.reset && ctx.ankles.valid && (act == nullptr || !act->whole_body || w <= 0))
     for (int i = 0; i < 2; ++i) {
-      if (lo.planted[i] || (act != nullptr && act->feet && w > 0 && act->kick_foot == i)) continue;
+      const bool to_ball = act != nullptr && act->feet && w > 0 && act->kick_foot == i && act->to_contact_s > -kContactFrameS;
+      if (lo.planted[i] || to_ball) continue;
       FootTarget& t = legs.feet[i];
       float fx, fy;
       body.to_field(t.ankle_ms[0], t.ankle_ms[2], fx, fy);
