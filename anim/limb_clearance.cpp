@@ -129,12 +129,20 @@ float hand_in_thigh(const SkeletonDef& skel, const std::array<glm::mat4, kHumanJ
 // knee, turned out 45 deg, came in as the arm swung back, from 5 cm clear
 // on both frames to 3.2 cm inside a third of the way (game 2 seq 1920-1921,
 // 60 Hz). Posed only where it can matter (kNearM, kBlendTurnDeg): posed
-// wherever the hand was within 25 cm, it cost 8 % of the animation.
-void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::span<const float> last) {
+// wherever the hand was within 25 cm, it cost 8 % of the animation. A hand
+// near its thigh in the frame before (`near`) is as near as one in this
+// frame: a runner's thigh swung back past a hand that swung forward, the
+// hand 11 cm out at the frame, 4 cm at the one before, and 2.5 cm inside
+// half-way between as the clients draw it (game 1 seq 3640). 15 deg of turn
+// let a hand pass 3.6 cm into a thigh turning 9.5 deg (game 2 seq 4747, at
+// six of eight phases of the display): 5 deg, for 1.6 % more of the
+// animation's instructions. Checked wherever the frame's hand was within
+// 15 cm, the blend cost 16 %.
+void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::span<const float> last, bool* near) {
   constexpr float kClearM = -0.06f;       // the hand's deepest point at least 6 cm outside the thigh
   constexpr float kBlendClearM = -0.01f;  // and in the clients' blend at least 1 cm
   constexpr float kNearM = -0.08f;        // a frame's hand this far out is not checked in the blend,
-  constexpr float kBlendTurnDeg = 15.0f;  // nor one whose hip and shoulder turn less than this
+  constexpr float kBlendTurnDeg = 5.0f;   // nor one whose hip and shoulder turn less than this
   constexpr float kThirds[2] = {1.0f / 3.0f, 2.0f / 3.0f};
   std::array<glm::mat4, kHumanJointCount> m;
   if (!pose_hands(skel, a, m)) return;
@@ -151,8 +159,15 @@ void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::spa
       if (it > 0 && !pose_hands(skel, a, m)) return;
       // Metres the hand is to move out: at this frame, and (for a third
       // of the blend, moved by a third of this frame's turn) in between.
-      float out = hand_in_thigh(skel, m, side, it == 0 && in_blend ? kNearM : kClearM) - kClearM;
-      if (it == 0) in_blend = in_blend && out > kNearM - kClearM;
+      // Read to kNearM where that is asked for (a hand further out reads
+      // kNearM), else only to kClearM.
+      const bool to_near = it == 0 && (in_blend || near != nullptr);
+      float out = hand_in_thigh(skel, m, side, to_near ? kNearM : kClearM) - kClearM;
+      if (it == 0) {
+        const bool near_now = to_near && out > kNearM - kClearM;
+        in_blend = in_blend && (near_now || (near != nullptr && near[side]));
+        if (near != nullptr) near[side] = near_now;
+      }
       if (in_blend) {
         for (float t : kThirds) {
           for (std::size_t d = 0; d < between.size(); ++d) between[d] = last[d] + (a[d] - last[d]) * t;

@@ -29,8 +29,11 @@ float box_distance(const Segment& seg, const glm::vec3& p, glm::vec3* towards);
 // the body (shoulder abduction) until the hand's box is 6 cm clear of the
 // thigh's, and, given the frame before (`last`, the same size as `a`), 1 cm
 // clear at a third and two thirds of the clients' blend from it. `a`: the
-// pose's angles (deg), changed in place.
-void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::span<const float> last = {});
+// pose's angles (deg), changed in place. `near` ([0] right, [1] left):
+// whether each hand was within 8 cm of its thigh in the frame before (the
+// blend is checked then too), set to whether it is in this one as it came.
+void keep_hands_off_thighs(const SkeletonDef& skel, std::span<float> a, std::span<const float> last = {},
+                           bool* near = nullptr);
 
 // How deep (m, negative: outside) side `side`'s hand (0 right, 1 left) is
 // in its own side's thigh: in the pose `a` and, given the frame before

@@ -448,7 +448,8 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     touch_ball(limits_from, body, pelvis_h, *act, act->kick_foot, legs, a);
   }
   if (act == nullptr || !act->whole_body)
-    keep_hands_off_thighs(limits_from, a, in.reset ? std::span<const float>() : std::span<const float>(ctx.last_angles));
+    keep_hands_off_thighs(limits_from, a, in.reset ? std::span<const float>() : std::span<const float>(ctx.last_angles),
+                          ctx.hands_near);
   // Joint speed limit (not across a teleport). Where it holds a planted leg
   // back, that foot lets go of the grass next frame rather than slide.
   bool limited[kHumanJointCount] = {};

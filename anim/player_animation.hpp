@@ -49,6 +49,7 @@ struct PlayerAnim {
   std::array<float, dof::kRHip> blend_x{}, blend_v{}, last_layer{};
   bool was_in_action = false;
   bool last_planted[2] = {false, false};
+  bool hands_near[2] = {false, false};  // a hand within 8 cm of its thigh last frame (keep_hands_off_thighs)
   AnkleTravel ankles;  // last frame's ankles and pelvis (ankle_travel.hpp)
   PlayerPose last_sent;  // last frame as it left (drawn_leg_clearance.hpp)
   // The action playing or about to play (kick_planner.hpp), and its bookkeeping.

@@ -87,17 +87,18 @@ TEST(SeparateLegsAgain, ATurnOutTooFastInFullTurnsAsFarAsTheLimitLets) {
   EXPECT_FLOAT_EQ(a[dof::kRHip + 1], -2.0f);  // the planted leg stays
 }
 
-// keep_hands_off_thighs. How deep (m) the left hand's box is in the left
-// thigh's at the pose `a`: the deepest of its corners, edge midpoints and
-// centre (> 0 inside).
-float left_hand_depth(std::span<const float> a) {
+// keep_hands_off_thighs. How deep (m) side `side`'s hand's box (0 right, 1
+// left) is in its own side's thigh's at the pose `a`: the deepest of its
+// corners, edge midpoints and centre (> 0 inside).
+float hand_depth(std::span<const float> a, int side) {
   const SkeletonDef& skel = human_skeleton();
   std::array<glm::mat4, kHumanJointCount> m;
   LocalToModelJob fk{&skel, a, glm::vec3(0.0f, 1.0f, 0.0f), m};
   EXPECT_TRUE(fk.Run());
-  const Segment& hs = skel.joints[kLHand].segment;
-  const Segment& ts = skel.joints[kLThigh].segment;
-  const glm::mat4 to_thigh = glm::inverse(m[kLThigh]) * m[kLHand];
+  const int hand = side == 0 ? kRHand : kLHand, thigh = side == 0 ? kRThigh : kLThigh;
+  const Segment& hs = skel.joints[static_cast<std::size_t>(hand)].segment;
+  const Segment& ts = skel.joints[static_cast<std::size_t>(thigh)].segment;
+  const glm::mat4 to_thigh = glm::inverse(m[static_cast<std::size_t>(thigh)]) * m[static_cast<std::size_t>(hand)];
   float depth = -1;
   for (float sx : {-0.5f, 0.0f, 0.5f})
     for (float sy : {-0.5f, 0.0f, 0.5f})
@@ -107,6 +108,7 @@ float left_hand_depth(std::span<const float> a) {
       }
   return depth;
 }
+float left_hand_depth(std::span<const float> a) { return hand_depth(a, 1); }
 
 std::array<float, dof::kCount> blend(const std::array<float, dof::kCount>& a, const std::array<float, dof::kCount>& b,
                                      float t) {
@@ -155,6 +157,56 @@ TEST(KeepHandsOffThighs, TheClientsBlendFromTheLastFrameIsKeptClear) {
   EXPECT_LE(a[dof::kLShoulder + 1] - kSprintLast[dof::kLShoulder + 1], 45.0f);  // the arms' bound a frame
   // The right arm, clear throughout, is left alone.
   EXPECT_EQ(a[dof::kRShoulder + 1], kSprintNow[dof::kRShoulder + 1]);
+}
+
+// Two frames of game 2 (seq 4747-4748, left 8): the right thigh, raised
+// 64 deg and splayed, turns 9.5 deg with the arm; each frame has the
+// right hand 6 cm out, and half-way between it is 3.8 cm in.
+constexpr std::array<float, dof::kCount> kSplayLast{
+    -3.89f, -1.30f, -1.40f, 9.11f, -1.95f, 1.40f, -51.94f, 1.62f, 0.00f, -77.92f, 0.97f, 0.00f,
+    9.89f, -14.60f, 0.00f, 29.14f, 0.00f, 0.00f, -22.86f, 14.60f, 0.00f, 29.14f, 0.00f, 0.00f,
+    55.75f, -44.07f, 29.65f, -11.47f, 0.90f, 28.00f, 11.28f, 16.77f, 33.89f, -44.86f, 27.99f, -6.90f};
+constexpr std::array<float, dof::kCount> kSplayNow{
+    -2.28f, -0.97f, -1.31f, 5.24f, -1.45f, 1.31f, -37.24f, 1.21f, 0.00f, -55.86f, 0.72f, 0.00f,
+    3.52f, -13.80f, 0.00f, 20.57f, 0.00f, 0.00f, -13.17f, 13.80f, 0.00f, 20.57f, 0.00f, 0.00f,
+    64.54f, -34.53f, 22.93f, -11.47f, -17.69f, 28.00f, -10.04f, 18.35f, 34.76f, -24.73f, 23.67f, -20.18f};
+
+TEST(KeepHandsOffThighs, ASmallTurnIsCheckedInTheBlendToo) {
+  ASSERT_GT(hand_depth(blend(kSplayLast, kSplayNow, 0.5f), 0), 0.03f);
+  auto a = kSplayNow;
+  keep_hands_off_thighs(human_skeleton(), a, kSplayLast);
+  for (float t : {1.0f / 3.0f, 0.5f, 2.0f / 3.0f}) EXPECT_LE(hand_depth(blend(kSplayLast, a, t), 0), 0.0f) << t;
+  EXPECT_LT(a[dof::kRShoulder + 1], kSplayNow[dof::kRShoulder + 1]);  // lifted away (right: -X)
+}
+
+// Two frames of game 1 (seq 3640-3641, right 1): the right hand, 4 cm from
+// its thigh in the frame before, is 11 cm out at this one, and the thigh
+// swinging back passes through it between them.
+constexpr std::array<float, dof::kCount> kPassLast{
+    2.47f, -5.21f, 0.58f, -5.67f, -4.81f, -0.58f, 15.81f, 1.40f, 0.00f, 23.71f, 0.84f, 0.00f,
+    -13.12f, -9.94f, 0.00f, 25.07f, 0.00f, 0.00f, 13.56f, 5.53f, 0.00f, 25.07f, 0.00f, 0.00f,
+    28.14f, -12.25f, -26.47f, -49.33f, 23.73f, -0.43f, 31.17f, 5.91f, 3.49f, -68.00f, 15.28f, -2.90f};
+constexpr std::array<float, dof::kCount> kPassNow{
+    0.25f, -11.21f, 0.11f, -0.58f, -9.41f, -0.11f, 40.48f, 1.67f, 0.00f, 60.71f, 1.00f, 0.00f,
+    7.41f, -4.01f, 0.00f, 34.13f, 0.00f, 0.00f, 27.02f, 4.01f, 0.00f, 34.13f, 0.00f, 0.00f,
+    11.48f, -32.82f, -29.84f, -48.62f, 32.70f, 27.94f, 28.79f, -19.48f, -5.88f, -82.31f, 33.00f, 13.83f};
+
+TEST(KeepHandsOffThighs, AHandNearItsThighInTheFrameBeforeIsCheckedInTheBlend) {
+  ASSERT_LT(hand_depth(kPassNow, 0), -0.09f);
+  ASSERT_GT(hand_depth(kPassLast, 0), -0.08f);
+  ASSERT_GT(hand_depth(blend(kPassLast, kPassNow, 0.5f), 0), -0.005f);
+  // Not near in the frame before: the hand, far at this one, is let be.
+  bool near[2] = {false, false};
+  auto a = kPassNow;
+  keep_hands_off_thighs(human_skeleton(), a, kPassLast, near);
+  EXPECT_EQ(a, kPassNow);
+  EXPECT_FALSE(near[0]);  // and it is not near now
+  // Near in the frame before: the blend is checked, and the arm turns out.
+  near[0] = true;
+  keep_hands_off_thighs(human_skeleton(), a, kPassLast, near);
+  EXPECT_LT(a[dof::kRShoulder + 1], kPassNow[dof::kRShoulder + 1]);
+  for (float t : {1.0f / 3.0f, 0.5f, 2.0f / 3.0f}) EXPECT_LE(hand_depth(blend(kPassLast, a, t), 0), -0.005f) << t;
+  EXPECT_FALSE(near[0]);
 }
 
 }  // namespace
