@@ -39,7 +39,9 @@
 // 3,241,920 B; game 2 3,222,362. Turns checked as the stream rounds
 // them, refused steps halved, whole-body actions checked too (and a
 // thigh kept off its own hand):
-// 3,241,916 B; game 2 3,222,367.
+// 3,241,916 B; game 2 3,222,367. A knee's own speed limit, the kicking
+// foot kept off the grass after contact and hands checked in the blend
+// more often (2026-11-30, session 33): 3,241,205 B; game 2 3,221,535.
 #include <gtest/gtest.h>
 
 #include <cstdio>
