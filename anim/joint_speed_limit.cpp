@@ -17,7 +17,10 @@ void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<flo
     const std::size_t n = jd.dofs.size();
     const bool kicking = kicking_foot >= 0 && j >= kick_thigh && j < kick_thigh + 3;  // thigh, shin, foot
     const bool knee = j == kRShin || j == kLShin;
-    const float cap = kicking ? kMaxKickLegStepDeg : knee ? kMaxKneeStepDeg : j >= kRThigh ? kMaxLegStepDeg : kMaxUpperStepDeg;
+    const float cap = kicking ? kMaxKickLegStepDeg
+                      : knee  ? kMaxKneeStepDeg
+                      : j >= kRThigh ? kMaxLegStepDeg
+                                     : kMaxUpperStepDeg;
     limited[j] = false;
     float sum = 0;
     for (std::size_t d = 0; d < n; ++d) sum += std::fabs(a[k + d] - last[k + d]);

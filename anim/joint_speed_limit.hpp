@@ -14,9 +14,9 @@ namespace mc::anim {
 // Scales each joint's change since `last` down to at most its group's
 // limit per frame (kMaxKneeStepDeg for a knee, kMaxKickLegStepDeg for
 // the leg of `kicking_foot`, 0 right, 1 left, -1 none); `limited` gets
-// the joints it held back. A joint whose dofs moved by less than the limit in total cannot have rotated further
-// (each elementary rotation adds at most its own angle), so only the others
-// are measured.
+// the joints it held back. A joint whose dofs moved by less than the limit
+// in total cannot have rotated further (each elementary rotation adds at
+// most its own angle), so only the others are measured.
 void limit_joint_speed(const SkeletonDef& skel, const float* last, std::span<float> a, bool limited[kHumanJointCount],
                        int kicking_foot);
 

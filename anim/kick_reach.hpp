@@ -5,7 +5,8 @@
 // short of the straight leg the IK asked for, and the foot with it. What
 // the knee cannot do the hip can: the whole leg turns about the hip,
 // within the hip's own turn and limits, until the foot's box is on the
-// ball, neither short of it nor in it. Human skeleton only (human_skeleton.hpp); no I/O.
+// ball, neither short of it nor in it. Human skeleton only
+// (human_skeleton.hpp); no I/O.
 #pragma once
 
 #include <span>
@@ -39,10 +40,10 @@ void touch_ball(const SkeletonDef& skel, const BodyFrame& body, float& pelvis_h,
 inline constexpr float kDeepInBallM = 0.01f;
 
 // Turns kicking leg `k` ([0] right, [1] left) about its hip so that its
-// foot's box comes `gap_m` off the ball (from further off, or from deeper
-// in than kDeepInBallM) (centre `ball_ms` in body space,
-// radius `ball_r`), keeping the hip within `cap_deg` of its angles in
-// `last` (deg, the last frame) and within its limits. `a`: the pose's
+// foot's box comes `gap_m` off the ball (centre `ball_ms` in body space,
+// radius `ball_r`), from further off or from deeper in than kDeepInBallM,
+// keeping the hip within `cap_deg` of its angles in `last` (deg, the last
+// frame) and within its limits. `a`: the pose's
 // angles (deg), changed in place; `pelvis_h`: the pelvis joint's height.
 // Returns the box's distance from the ball surface it leaves (m).
 float reach_ball_with_hip(const SkeletonDef& skel, std::span<const float> last, float pelvis_h, const glm::vec3& ball_ms,

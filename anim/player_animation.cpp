@@ -285,7 +285,8 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // sliding, anim/README.md "A knee's own speed").
   if (own_feet && !in.reset && ctx.ankles.valid && (act == nullptr || !act->whole_body || w <= 0))
     for (int i = 0; i < 2; ++i) {
-      const bool to_ball = act != nullptr && act->feet && w > 0 && act->kick_foot == i && act->to_contact_s > -kContactFrameS;
+      const bool to_ball =
+          act != nullptr && act->feet && w > 0 && act->kick_foot == i && act->to_contact_s > -kContactFrameS;
       if (lo.planted[i] || to_ball) continue;
       FootTarget& t = legs.feet[i];
       float fx, fy;
@@ -460,8 +461,8 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       if (lo.planted[i] && (limited[j0] || limited[j0 + 1] || limited[j0 + 2])) ctx.loco.feet[i].release = true;
     }
     // A kicking leg the limit held short of the ball, or in it, meets it
-    // with the hip (kick_reach.hpp): a knee bent 79 deg the frame before left game 1
-    // seq 10697's foot 6 cm short.
+    // with the hip (kick_reach.hpp): a knee bent 79 deg the frame before
+    // left game 1 seq 10697's foot 6 cm short.
     if (contact) {
       const int j0 = act->kick_foot == 0 ? kRThigh : kLThigh;
       if (limited[j0] || limited[j0 + 1] || limited[j0 + 2]) {

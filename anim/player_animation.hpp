@@ -81,13 +81,14 @@ struct PlayerAnim {
 // that a planted leg twists within the joint speed limit; the server allows 180 deg per cycle.
 inline constexpr float kMaxTurnPerFrameDeg = 12.0f;
 // Fastest rotation of a joint between two frames (deg per 50 ms): legs 1 000
-// deg/s (a sprinter's knee), arms, trunk, neck and head 760 deg/s. Issue 23's
-// limits are 60 and 45; the margin covers the stream's quantization.
+// deg/s (a sprinter's knee; the knee itself a little more, below), arms,
+// trunk, neck and head 760 deg/s. Issue 23's limits are 60 and 45; the
+// margin covers the stream's quantization.
 inline constexpr float kMaxLegStepDeg = 50.0f;
 // The knee alone may turn further: at 50 deg it held a sprinter's swing
 // knee short of folding after toe-off, and the foot, behind a leg still
 // nearly straight, hung a few centimetres over the grass while it
-// travelled 0.5-0.8 m (game 1 seq 7525, right 10: 4 mm up): a foot that
+// travelled 0.5-0.8 m (game 1 seq 7525, right 11: 4 mm up): a foot that
 // slides, at 20 Hz and in the clients' blend. 56 deg (1 120 deg/s, 12 %
 // over the figure above) took game 1's 60 Hz grounded-foot band of 8-9
 // m/s at the display's phases 0.35-0.75 from 0.52-0.54 to 0.47-0.51 m/s,

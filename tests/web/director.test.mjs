@@ -146,7 +146,8 @@ describe('the director on the page', { timeout: 420000 }, () => {
     const slack = 4 * (1000 / Math.max(1, (await stats(page)).fps)) / 1000 * SPEED;
     const replay = (d.log[i + 3].at - d.log[i + 1].at) / 1000 * SPEED;
     const back = (d.log[i + 3].at - d.log[i].at) / 1000 * SPEED;
-    assert.ok(replay > 11 && replay < 12 + slack, `the replay took ${replay.toFixed(1)} s of game time`);
+    assert.ok(replay > 11 && replay < 12 + slack,
+      `the replay took ${replay.toFixed(2)} s of game time: ${JSON.stringify(d.log.slice(i, i + 4))}`);
     assert.ok(back < 15 + slack, `back to live ${back.toFixed(1)} s (game time) after the scorer shot`);
     await snap('after-replay');
     // Catching up: the time shift closes on live.
