@@ -226,7 +226,7 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
     // Each joint within its own speed limit: the hip's three dofs as one
     // rotation, the knee's one angle.
     const bool knee = k == static_cast<std::size_t>(dof::kRKnee) || k == static_cast<std::size_t>(dof::kLKnee);
-    if (knee ? std::fabs(cand[k] - last_angles[k]) > kMaxLegStepDeg
+    if (knee ? std::fabs(cand[k] - last_angles[k]) > kMaxKneeStepDeg
              : hip_turning_too_fast(last_angles, cand, kMaxLegStepDeg + kSeparateAgainDeg, side) >= 0)
       return Tried::Refused;
     std::copy_n(cand.begin(), dof::kCount, pb.angles.begin());
@@ -238,7 +238,8 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
     // No ankle pops where there were none (nor worse ones), and no foot
     // on the grass carried over it further.
     for (int i = 0; i < 2; ++i)
-      if (d.pop[i] > std::max(1.0f, before.pop[i]) || d.slide[i] > before.slide[i] + kSlideSlackM) return Tried::Refused;
+      if (d.pop[i] > std::max(1.0f, before.pop[i]) || d.slide[i] > before.slide[i] + kSlideSlackM)
+        return Tried::Refused;
     // Cleared unrounded, but as sent no clearer than the best so far.
     if (d.clearance <= best) return Tried::Passed;
     // Nor a thigh turned into its own side's hand, which the arm was held

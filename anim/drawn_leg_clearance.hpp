@@ -44,17 +44,17 @@ inline constexpr float kDrawnApartM = 0.005f;
 // or about its own axis (a toe or heel out of the other foot's way); or it
 // bends or straightens its knee as far. A turn is refused when the hip
 // would turn faster than the joint speed limit plus kSeparateAgainDeg (or
-// a third of that in a third of the frame), or the knee faster than the
-// limit, when the frame's own legs would come closer, when an ankle would
+// a third of that in a third of the frame), or the knee faster than its
+// own (kMaxKneeStepDeg), when the frame's own legs would come closer, when an ankle would
 // pop as drawn where it did not, when a foot on the grass would be
 // carried further over it, or when the thigh would come within 1 cm of
 // its own side's hand (or deeper than it was); a refused step is tried
 // once more at half its size. A turn clears the blend only if it also
 // clears with the frame rounded as the stream will carry it
 // (round_legs_to_grid, then the encoder's grid). The first turn that
-// clears, or else the one that leaves the blend clearest, is kept. `turned`: an earlier call turned
-// this frame (the frame is then drawn as sent even when it clears
-// unrounded). True when `a` changed.
+// clears, or else the one that leaves the blend clearest, is kept.
+// `turned`: an earlier call turned this frame (the frame is then drawn as
+// sent even when it clears unrounded). True when `a` changed.
 inline constexpr int kDrawnSteps = 6;  // t = 1/6, 2/6, ..., 1
 inline constexpr float kDrawnStepDeg = 4.0f;
 inline constexpr float kDrawnMostDeg = 32.0f;

@@ -210,8 +210,8 @@ TEST(KeepLegsApartDrawn, ASwingThatCrossesLowLiftsItsFootWithTheKnee) {
   // The right knee bent further; nothing else moved.
   EXPECT_LT(c.a[dof::kRKnee], before[dof::kRKnee]);
   expect_only(dof::kRKnee, c.a, before);
-  // Within the joint speed limit since the frame before.
-  EXPECT_LE(std::fabs(c.a[dof::kRKnee] - c.last_angles[dof::kRKnee]), kMaxLegStepDeg);
+  // Within the knee's speed limit since the frame before.
+  EXPECT_LE(std::fabs(c.a[dof::kRKnee] - c.last_angles[dof::kRKnee]), kMaxKneeStepDeg);
 }
 
 TEST(KeepLegsApartDrawn, ASwingPastThePlantedLegReachesLessFarAtTheFrame) {
@@ -266,13 +266,13 @@ TEST(KeepLegsApartDrawn, TheFrameIsClearedAsTheStreamCarriesIt) {
 
 TEST(KeepLegsApartDrawn, TheKneeStaysWithinItsSpeedLimit) {
   // A crossing swing from 28 deg back to 36 deg forward, adducted 12 deg,
-  // its knee bent 50 deg more since the frame before (the joint speed
-  // limit): bending it further would leave the blend clearer than any
-  // other turn, but faster than a knee may turn.
-  RightSwing c(-28.0f, -10.0f, 36.0f, -10.0f - kMaxLegStepDeg, 12.0f, 1.0f);
+  // its knee bent 56 deg more since the frame before (the knee's speed
+  // limit, kMaxKneeStepDeg): bending it further would leave the blend
+  // clearer than any other turn, but faster than a knee may turn.
+  RightSwing c(-28.0f, -10.0f, 36.0f, -10.0f - kMaxKneeStepDeg, 12.0f, 1.0f);
   ASSERT_LT(c.drawn(), 0.0f);
   c.keep_apart();
-  EXPECT_LE(std::fabs(c.a[dof::kRKnee] - c.last_angles[dof::kRKnee]), kMaxLegStepDeg);
+  EXPECT_LE(std::fabs(c.a[dof::kRKnee] - c.last_angles[dof::kRKnee]), kMaxKneeStepDeg);
 }
 
 TEST(KeepLegsApartDrawn, TheTurnStaysWithinTheHipsSpeedLimit) {
