@@ -460,16 +460,25 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
         dx = pdx + rx * kSwingPastHipM / rn;
         dy = pdy + ry * kSwingPastHipM / rn;
       }
-      f.cx += dx;
-      f.cy += dy;
-      // It passes the other foot on its own side, a sole's width clear.
       float ox, oy, oh;
       if (o.planted) planted_ankle(o.x, o.y, o.yaw, o.pitch, ox, oy, oh);
       else { ox = o.cx; oy = o.cy; }
-      float fbx, fbz, obx, obz;
-      body.to_body(f.cx, f.cy, fbx, fbz);
+      float was_bx, was_bz, obx, obz;
+      body.to_body(f.cx, f.cy, was_bx, was_bz);
       body.to_body(ox, oy, obx, obz);
-      if (std::fabs(fbx - obx) < kPassLength && kSide[i] * (fbz - obz) < prm.min_gap) {
+      f.cx += dx;
+      f.cy += dy;
+      // It passes the other foot on its own side, a sole's width clear.
+      float fbx, fbz;
+      body.to_body(f.cx, f.cy, fbx, fbz);
+      const auto beside = [&](float bx) { return std::fabs(bx - obx) < kPassLength; };
+      const auto side_gap = [&](float bz) { return kSide[i] * (bz - obz); };
+      if (beside(fbx) && side_gap(fbz) < prm.min_gap) {
+        // A foot left crossed behind (or before) the other one by a fast
+        // turn uncrosses where it is, a pass length off, and passes on the
+        // next frame: pushed aside within the pass length, its leg swept
+        // through the other one (game 2 seq 11568, left 5).
+        if (side_gap(was_bz) < 0.0f && !beside(was_bx)) fbx = obx + std::copysign(kPassLength, was_bx - obx);
         fbz = obz + kSide[i] * prm.min_gap;
         body.to_field(fbx, fbz, f.cx, f.cy);
       }

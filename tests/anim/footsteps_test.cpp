@@ -276,6 +276,65 @@ TEST(Footsteps, SolesOfFeetTurnedApartDoNotCross) {
     }
 }
 
+// A foot left crossed behind the planted one (a body that turned 80 deg
+// over its feet while it side-stepped: game 2 seq 11568, left 5) comes back
+// to its own side while it is still a pass length behind, not beside the
+// other foot, where its leg would sweep through the planted one.
+TEST(Footsteps, AFootCrossedBehindUncrossesBeforeItPasses) {
+  FootstepParams prm;
+  const float dt = 0.05f, v = 1.5f;
+  FootstepState s;
+  FootstepInput in;
+  in.dt = dt;
+  FootstepOutput out;
+  step_footsteps(s, in, prm, out);
+  // Walking on +x, the right foot (0) planted under its hip, the left (1)
+  // in the air 0.40 m behind it and 0.26 m to its right.
+  s.moving = true;
+  s.speed = v;
+  s.vx = v;
+  s.phase = 0.03f;
+  FootState& r = s.feet[0];
+  FootState& l = s.feet[1];
+  r.planted = true;
+  r.x = 0.1f;
+  r.y = 0.11f;
+  r.yaw = 0;
+  r.stance_s = 0.05f;
+  l.planted = false;
+  l.cx = l.ax = r.x - 0.06f - 0.40f;
+  l.cy = l.ay = r.y + 0.26f;
+  l.ah = 0.12f;
+  l.bx = r.x + 0.5f;
+  l.by = -0.11f;
+  l.u = 0.4f;
+  l.phase_left = 0.5f;
+  int frames_beside_crossed = 0, frames = 0;
+  for (int f = 0; f < 12 && !l.planted; ++f, ++frames) {
+    in.x = v * dt * static_cast<float>(f);
+    for (int k = 0; k < kPathAhead; ++k) in.ahead_x[k] = in.x + v * dt * static_cast<float>(k + 1);
+    in.ahead_n = kPathAhead;
+    const float was_x = l.cx, was_y = l.cy;
+    step_footsteps(s, in, prm, out);
+    ASSERT_TRUE(r.planted) << f;
+    // The other ankle, and the left ankle's way this frame, body space.
+    float ox, oy, oh;
+    planted_ankle(r.x, r.y, r.yaw, r.pitch, ox, oy, oh);
+    const BodyFrame body(in.x, in.y, in.heading);
+    float obx, obz;
+    body.to_body(ox, oy, obx, obz);
+    for (float t : {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}) {
+      float bx, bz;
+      body.to_body(was_x + (l.cx - was_x) * t, was_y + (l.cy - was_y) * t, bx, bz);
+      // Beside the planted ankle (within 0.3 m along) and not on its own
+      // (left, -Z) side of it.
+      if (std::fabs(bx - obx) < 0.30f && bz > obz - 0.05f) ++frames_beside_crossed;
+    }
+  }
+  EXPECT_GT(frames, 2);
+  EXPECT_EQ(frames_beside_crossed, 0);
+}
+
 TEST(Footsteps, PlantedAnkleRollsOverItsEdges) {
   float ax, ay, ah;
   planted_ankle(1.0f, 2.0f, 0, 0, ax, ay, ah);
