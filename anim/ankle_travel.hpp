@@ -94,8 +94,11 @@ struct DrawnRoot {
 // most 1 deg, 1.5 cm at the ankle in a third of a frame: 0.045 m per
 // frame). With 0.58 m the last two 60 Hz pops (game 1 seq 2378, game 2
 // seq 8592) were such feet leaving the grass at 9 m/s, 0.61-0.62 m.
+// 0.54, not 0.55 (session 34): the legs held back this little more pass
+// through each other less in the blend (60 Hz legs too close over eight
+// phases 3 and 3 -> 1 and 2), with no other figure moved past its rounding.
 inline constexpr float kDrawnPopM = 0.97f;
-inline constexpr float kDrawnPopRelM = 0.55f;
+inline constexpr float kDrawnPopRelM = 0.54f;
 int limit_drawn_travel(const SkeletonDef& skel, const DrawnRoot& last, std::span<const float> last_angles,
                        const glm::vec3 last_ankle[2], const DrawnRoot& now, std::span<float> a,
                        const glm::vec3 now_ankle[2], const bool skip[2]);

@@ -17,6 +17,14 @@ constexpr float kSoleCentre = 0.5f * (dims::kFootFront - dims::kFootBack);  // 0
 constexpr float kSoleHalf = 0.5f * (dims::kFootFront + dims::kFootBack);    // 0.13
 constexpr float kSettleSwingS = 0.32f;  // s, a settling step's swing
 constexpr float kSwingPastHipM = 0.55f;  // m a frame, a swinging ankle relative to the root (11 m/s)
+// The same on the frame a foot lands, below kLandingBoundBelow m/s: it also
+// comes down 0.1-0.2 m on that frame, and the clients' blend of its angles
+// carries it fastest mid-frame. Landing steps of 0.48 m past the hip read
+// 0.62 m a frame at 60 Hz (game 1 seq 1058, right 9: an ankle pop).
+// Sprinters keep the full bound: held to 0.45 m their feet landed short
+// and slid (game 2's 9+ m/s band 0.47 -> 0.55 m/s at 60 Hz).
+constexpr float kLandingPastHipM = 0.45f;
+constexpr float kLandingBoundBelow = 8.0f;
 constexpr float kApproachSlope = 0.4f;  // m up per m still to travel, coming down
 constexpr float kPassLength = 0.32f;    // m along the body within which two feet are side by side
 // m between two soles' centre lines when one lands: the boxes are 0.10 m
@@ -279,6 +287,16 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
   const float amp = s.moving ? clampf(s.speed / 1.5f, 0.0f, 1.0f) : 0.0f;
   const float stride_pelvis = 0.975f - 0.035f * amp * (1.0f - s.run) - 0.05f * s.run;
 
+  // Where each planted foot's ankle stands as the frame starts: one that
+  // lifts on this frame leaves from there, and the clients' blend with it.
+  bool planted_before[2];
+  float stood_x[2], stood_y[2];
+  for (int i = 0; i < 2; ++i) {
+    const FootState& f = s.feet[i];
+    float h;
+    planted_before[i] = f.planted;
+    planted_ankle(f.x, f.y, f.yaw, f.pitch, stood_x[i], stood_y[i], h);
+  }
   for (int i = 0; i < 2; ++i) {
     FootState& f = s.feet[i];
     FootState& o = s.feet[1 - i];
@@ -456,9 +474,10 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
       // foot now swings on to it (the extra frames below).
       const float pdx = in.x - s.x, pdy = in.y - s.y;
       const float rx = dx - pdx, ry = dy - pdy, rn = pm::hypot(rx, ry);
-      if (rn > kSwingPastHipM) {
-        dx = pdx + rx * kSwingPastHipM / rn;
-        dy = pdy + ry * kSwingPastHipM / rn;
+      const float past = f.u >= 1.0f && s.speed < kLandingBoundBelow ? kLandingPastHipM : kSwingPastHipM;
+      if (rn > past) {
+        dx = pdx + rx * past / rn;
+        dy = pdy + ry * past / rn;
       }
       float ox, oy, oh;
       if (o.planted) planted_ankle(o.x, o.y, o.yaw, o.pitch, ox, oy, oh);
@@ -473,14 +492,40 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
       body.to_body(f.cx, f.cy, fbx, fbz);
       const auto beside = [&](float bx) { return std::fabs(bx - obx) < kPassLength; };
       const auto side_gap = [&](float bz) { return kSide[i] * (bz - obz); };
-      if (beside(fbx) && side_gap(fbz) < prm.min_gap) {
+      // Nor on its way there past a foot that stood on the grass as the
+      // frame began, one lifting on this frame too: the clients' blend
+      // starts from it (game 2 seq 4284, right 10: the left foot crossed
+      // over the right one as it lifted, 0.5 m in one frame).
+      bool through = false;
+      if (planted_before[1 - i]) {
+        float sbx, sbz;
+        body.to_body(stood_x[1 - i], stood_y[1 - i], sbx, sbz);
+        for (float t : {0.25f, 0.5f, 0.75f, 1.0f}) {
+          const float bx = was_bx + (fbx - was_bx) * t, bz = was_bz + (fbz - was_bz) * t;
+          through = through || (std::fabs(bx - sbx) < kPassLength && kSide[i] * (bz - sbz) < 0.0f);
+        }
+        // It passes on its own side of both places of the other foot.
+        if (through) {
+          obx = sbx;
+          obz = kSide[i] * (sbz - obz) > 0.0f ? sbz : obz;
+        }
+      }
+      if (through || (beside(fbx) && side_gap(fbz) < prm.min_gap)) {
         // A foot left crossed behind (or before) the other one by a fast
-        // turn uncrosses where it is, a pass length off, and passes on the
-        // next frame: pushed aside within the pass length, its leg swept
-        // through the other one (game 2 seq 11568, left 5).
-        if (side_gap(was_bz) < 0.0f && !beside(was_bx)) fbx = obx + std::copysign(kPassLength, was_bx - obx);
+        // turn uncrosses a pass length off, and passes on the next frame:
+        // pushed aside within the pass length, its leg swept through the
+        // other one (game 2 seq 11568, right 5; seq 3886, right 5, crossed
+        // 0.31 m behind).
+        if (side_gap(was_bz) < 0.0f && beside(fbx)) fbx = obx + std::copysign(kPassLength, was_bx - obx);
         fbz = obz + kSide[i] * prm.min_gap;
+        // Still no faster past the hip than the bound above.
+        const float from_x = f.cx - dx, from_y = f.cy - dy;
         body.to_field(fbx, fbz, f.cx, f.cy);
+        const float qx = f.cx - from_x - pdx, qy = f.cy - from_y - pdy, qn = pm::hypot(qx, qy);
+        if (qn > past) {
+          f.cx = from_x + pdx + qx * past / qn;
+          f.cy = from_y + pdy + qy * past / qn;
+        }
       }
     }
     // It lands on its spot, within reach of the hip at the next frame;

@@ -508,15 +508,19 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
       // A leg held back may come back into the other one (game 2 seq 9484,
       // feet 3 mm too close): it is turned out again and checked again
       // until a check lets it be, and if one still holds it after
-      // kDrawnRetries, turned out a last time: legs kept apart come before
-      // the last millimetres of a third of a frame's travel.
+      // kDrawnRetries, turned out a last time and held back once more.
+      // Left at that last turn, a foot passed the pop bound (game 1 seq
+      // 8794, right 9: 0.61 m a frame at 60 Hz, session 34); the drawn-leg
+      // check below keeps the legs apart in the blend.
       bool held = true;
       for (int k = 0; k < kDrawnRetries && held && own_feet && !contact; ++k) {
         separate_legs_again(limits_from, body, pelvis_h, ctx.last_angles, &ctx.ankles, lo.planted, a);
         held = hold_drawn();
       }
-      if (held && own_feet && !contact)
+      if (held && own_feet && !contact) {
         separate_legs_again(limits_from, body, pelvis_h, ctx.last_angles, &ctx.ankles, lo.planted, a);
+        hold_drawn();
+      }
       rest_on_grass(8.0f);
     }
   }

@@ -277,7 +277,7 @@ TEST(Footsteps, SolesOfFeetTurnedApartDoNotCross) {
 }
 
 // A foot left crossed behind the planted one (a body that turned 80 deg
-// over its feet while it side-stepped: game 2 seq 11568, left 5) comes back
+// over its feet while it side-stepped: game 2 seq 11568, right 5) comes back
 // to its own side while it is still a pass length behind, not beside the
 // other foot, where its leg would sweep through the planted one.
 TEST(Footsteps, AFootCrossedBehindUncrossesBeforeItPasses) {
@@ -333,6 +333,114 @@ TEST(Footsteps, AFootCrossedBehindUncrossesBeforeItPasses) {
   }
   EXPECT_GT(frames, 2);
   EXPECT_EQ(frames_beside_crossed, 0);
+}
+
+// A foot swinging past the other one as that one lifts does not cross
+// over it within the frame: its way is checked, not only where it ends
+// (game 2 seq 4284, left 10: a side-step to the right, the left foot
+// crossing from beside the right one to 0.2 m right of it and 0.5 m ahead
+// as the right lifted, through it in the clients' blend).
+TEST(Footsteps, AFootDoesNotCrossOverTheOneThatLifts) {
+  FootstepParams prm;
+  const float dt = 0.05f, v = 5.0f;
+  const float dir = 75.0f * kDeg;  // the way the body goes: forward and to the right (+y)
+  int crossed = 0, tried = 0;
+  for (float ahead : {-0.05f, 0.0f, 0.05f, 0.1f}) {
+    FootstepState s;
+    FootstepInput in;
+    in.dt = dt;
+    FootstepOutput out;
+    step_footsteps(s, in, prm, out);
+    s.moving = true;
+    s.speed = v;
+    s.run = 1;
+    s.vx = v * std::cos(dir);
+    s.vy = v * std::sin(dir);
+    s.phase = 0.5f;
+    FootState& r = s.feet[0];
+    FootState& l = s.feet[1];
+    r.planted = true;
+    r.x = 0.06f;
+    r.y = 0.11f;
+    r.yaw = 0;
+    r.stance_s = 0.1f;
+    r.release = true;  // it lifts on this frame
+    l.planted = false;
+    l.cx = l.ax = ahead;
+    l.cy = l.ay = -0.08f;
+    l.ah = 0.15f;
+    l.bx = 0.6f;
+    l.by = 0.3f;
+    l.u = 0.8f;
+    l.phase_left = 0.5f;
+    in.x = in.y = 0;
+    for (int k = 0; k < kPathAhead; ++k) {
+      const float d = v * dt * static_cast<float>(k + 1);
+      in.ahead_x[k] = d * std::cos(dir);
+      in.ahead_y[k] = d * std::sin(dir);
+    }
+    in.ahead_n = kPathAhead;
+    float ox, oy, oh;
+    planted_ankle(r.x, r.y, r.yaw, r.pitch, ox, oy, oh);
+    const float was_x = l.cx, was_y = l.cy;
+    step_footsteps(s, in, prm, out);
+    ASSERT_FALSE(r.planted);
+    ++tried;
+    // Along the left ankle's way: beside the right ankle where it stood
+    // (within 0.3 m along) and right of it.
+    for (float t = 0; t <= 1.0f; t += 0.125f) {
+      const float x = was_x + (l.cx - was_x) * t, y = was_y + (l.cy - was_y) * t;
+      if (std::fabs(x - ox) < 0.30f && y > oy) ++crossed;
+    }
+  }
+  EXPECT_EQ(tried, 4);
+  EXPECT_EQ(crossed, 0);
+}
+
+// On the frame it lands, a foot goes no more than 0.45 m past the hip
+// (0.55 in the rest of its swing): it comes down on that frame too, and the
+// clients' blend carried it 0.62 m a frame at 60 Hz (game 1 seq 1058, right
+// 9). A sprinter's foot keeps the full 0.55 (there the 0.85 m a frame over
+// the grass binds first).
+TEST(Footsteps, ALandingFootStepsNoFurtherPastTheHipThanAHumanLands) {
+  FootstepParams prm;
+  const float dt = 0.05f;
+  for (float v : {5.0f, 9.0f}) {
+    FootstepState s;
+    FootstepInput in;
+    in.dt = dt;
+    FootstepOutput out;
+    step_footsteps(s, in, prm, out);
+    s.moving = true;
+    s.speed = v;
+    s.run = 1;
+    s.vx = v;
+    s.phase = 0.45f;
+    FootState& r = s.feet[0];
+    FootState& l = s.feet[1];
+    r.planted = true;
+    r.x = 0.1f;
+    r.y = 0.11f;
+    r.stance_s = 0.05f;
+    // The left foot 0.7 m behind the hip, at the end of its swing.
+    l.planted = false;
+    l.cx = l.ax = -0.7f;
+    l.cy = l.ay = -0.11f;
+    l.ah = 0.1f;
+    l.bx = 0.3f;
+    l.by = -0.11f;
+    l.u = 0.97f;
+    l.phase_left = 0.5f;
+    l.since_landing = 20;
+    in.x = v * dt;
+    for (int k = 0; k < kPathAhead; ++k) in.ahead_x[k] = in.x + v * dt * static_cast<float>(k + 1);
+    in.ahead_n = kPathAhead;
+    const float was_x = l.cx, was_y = l.cy;
+    step_footsteps(s, in, prm, out);
+    const float past = std::hypot(l.cx - was_x - v * dt, l.cy - was_y);
+    EXPECT_LE(past, (v < 8.0f ? 0.45f : 0.55f) + 1e-4f) << v << " m/s";
+    EXPECT_GT(past, 0.3f) << v << " m/s";  // it went on
+  }
 }
 
 TEST(Footsteps, PlantedAnkleRollsOverItsEdges) {
