@@ -276,46 +276,77 @@ TEST(Footsteps, SolesOfFeetTurnedApartDoNotCross) {
     }
 }
 
+// A player in stride after one standing frame at the origin, heading +x:
+// the right foot (0) planted with its sole's centre at (rx, ry), the left
+// (1) in the air, its ankle at (lx, ly), `u` through its swing.
+struct Stride {
+  float v = 0, dir_deg = 0, run = 0, phase = 0;
+  float rx = 0, ry = 0, lx = 0, ly = 0, u = 0;
+};
+
+FootstepState in_stride(const Stride& st) {
+  FootstepState s;
+  FootstepInput in;
+  FootstepOutput out;
+  step_footsteps(s, in, FootstepParams{}, out);
+  s.moving = true;
+  s.speed = st.v;
+  s.run = st.run;
+  s.vx = st.v * std::cos(st.dir_deg * kDeg);
+  s.vy = st.v * std::sin(st.dir_deg * kDeg);
+  s.phase = st.phase;
+  FootState& r = s.feet[0];
+  r.planted = true;
+  r.x = st.rx;
+  r.y = st.ry;
+  r.yaw = 0;
+  r.stance_s = 0.05f;
+  FootState& l = s.feet[1];
+  l.planted = false;
+  l.cx = l.ax = st.lx;
+  l.cy = l.ay = st.ly;
+  l.ah = 0.12f;
+  l.bx = st.rx + 0.5f;
+  l.by = -0.11f;
+  l.u = st.u;
+  l.phase_left = 0.5f;
+  l.since_landing = 20;
+  return s;
+}
+
+// This frame's input for a root at (x, y) that goes at v m/s towards
+// dir_deg, with the look-ahead's path.
+FootstepInput on_path(float x, float y, float v, float dir_deg) {
+  FootstepInput in;
+  in.x = x;
+  in.y = y;
+  const float dx = v * 0.05f * std::cos(dir_deg * kDeg), dy = v * 0.05f * std::sin(dir_deg * kDeg);
+  for (int k = 0; k < kPathAhead; ++k) {
+    in.ahead_x[k] = x + dx * static_cast<float>(k + 1);
+    in.ahead_y[k] = y + dy * static_cast<float>(k + 1);
+  }
+  in.ahead_n = kPathAhead;
+  return in;
+}
+
 // A foot left crossed behind the planted one (a body that turned 80 deg
 // over its feet while it side-stepped: game 2 seq 11568, right 5) comes back
 // to its own side while it is still a pass length behind, not beside the
 // other foot, where its leg would sweep through the planted one.
 TEST(Footsteps, AFootCrossedBehindUncrossesBeforeItPasses) {
-  FootstepParams prm;
-  const float dt = 0.05f, v = 1.5f;
-  FootstepState s;
-  FootstepInput in;
-  in.dt = dt;
-  FootstepOutput out;
-  step_footsteps(s, in, prm, out);
-  // Walking on +x, the right foot (0) planted under its hip, the left (1)
-  // in the air 0.40 m behind it and 0.26 m to its right.
-  s.moving = true;
-  s.speed = v;
-  s.vx = v;
-  s.phase = 0.03f;
-  FootState& r = s.feet[0];
-  FootState& l = s.feet[1];
-  r.planted = true;
-  r.x = 0.1f;
-  r.y = 0.11f;
-  r.yaw = 0;
-  r.stance_s = 0.05f;
-  l.planted = false;
-  l.cx = l.ax = r.x - 0.06f - 0.40f;
-  l.cy = l.ay = r.y + 0.26f;
-  l.ah = 0.12f;
-  l.bx = r.x + 0.5f;
-  l.by = -0.11f;
-  l.u = 0.4f;
-  l.phase_left = 0.5f;
+  const float v = 1.5f;
+  // Walking on +x, the left foot 0.40 m behind the right one and 0.26 m
+  // to its right.
+  FootstepState s = in_stride({.v = v, .phase = 0.03f, .rx = 0.1f, .ry = 0.11f, .lx = 0.1f - 0.06f - 0.40f,
+                               .ly = 0.11f + 0.26f, .u = 0.4f});
+  const FootState& r = s.feet[0];
+  const FootState& l = s.feet[1];
   int frames_beside_crossed = 0, frames = 0;
   for (int f = 0; f < 12 && !l.planted; ++f, ++frames) {
-    in.x = v * dt * static_cast<float>(f);
-    for (int k = 0; k < kPathAhead; ++k) in.ahead_x[k] = in.x + v * dt * static_cast<float>(k + 1);
-    in.ahead_n = kPathAhead;
+    const FootstepInput in = on_path(v * 0.05f * static_cast<float>(f), 0, v, 0);
     const float was_x = l.cx, was_y = l.cy;
-    step_footsteps(s, in, prm, out);
+    FootstepOutput out;
+    step_footsteps(s, in, FootstepParams{}, out);
     ASSERT_TRUE(r.planted) << f;
     // The other ankle, and the left ankle's way this frame, body space.
     float ox, oy, oh;
@@ -337,53 +368,24 @@ TEST(Footsteps, AFootCrossedBehindUncrossesBeforeItPasses) {
 
 // A foot swinging past the other one as that one lifts does not cross
 // over it within the frame: its way is checked, not only where it ends
-// (game 2 seq 4284, left 10: a side-step to the right, the left foot
+// (game 2 seq 4284, right 10: a side-step to the right, the left foot
 // crossing from beside the right one to 0.2 m right of it and 0.5 m ahead
 // as the right lifted, through it in the clients' blend).
 TEST(Footsteps, AFootDoesNotCrossOverTheOneThatLifts) {
-  FootstepParams prm;
-  const float dt = 0.05f, v = 5.0f;
-  const float dir = 75.0f * kDeg;  // the way the body goes: forward and to the right (+y)
+  const float v = 5.0f, dir = 75.0f;  // forward and to the right (+y)
   int crossed = 0, tried = 0;
   for (float ahead : {-0.05f, 0.0f, 0.05f, 0.1f}) {
-    FootstepState s;
-    FootstepInput in;
-    in.dt = dt;
-    FootstepOutput out;
-    step_footsteps(s, in, prm, out);
-    s.moving = true;
-    s.speed = v;
-    s.run = 1;
-    s.vx = v * std::cos(dir);
-    s.vy = v * std::sin(dir);
-    s.phase = 0.5f;
+    FootstepState s = in_stride(
+        {.v = v, .dir_deg = dir, .run = 1, .phase = 0.5f, .rx = 0.06f, .ry = 0.11f, .lx = ahead, .ly = -0.08f, .u = 0.8f});
     FootState& r = s.feet[0];
-    FootState& l = s.feet[1];
-    r.planted = true;
-    r.x = 0.06f;
-    r.y = 0.11f;
-    r.yaw = 0;
+    const FootState& l = s.feet[1];
     r.stance_s = 0.1f;
     r.release = true;  // it lifts on this frame
-    l.planted = false;
-    l.cx = l.ax = ahead;
-    l.cy = l.ay = -0.08f;
-    l.ah = 0.15f;
-    l.bx = 0.6f;
-    l.by = 0.3f;
-    l.u = 0.8f;
-    l.phase_left = 0.5f;
-    in.x = in.y = 0;
-    for (int k = 0; k < kPathAhead; ++k) {
-      const float d = v * dt * static_cast<float>(k + 1);
-      in.ahead_x[k] = d * std::cos(dir);
-      in.ahead_y[k] = d * std::sin(dir);
-    }
-    in.ahead_n = kPathAhead;
     float ox, oy, oh;
     planted_ankle(r.x, r.y, r.yaw, r.pitch, ox, oy, oh);
     const float was_x = l.cx, was_y = l.cy;
-    step_footsteps(s, in, prm, out);
+    FootstepOutput out;
+    step_footsteps(s, on_path(0, 0, v, dir), FootstepParams{}, out);
     ASSERT_FALSE(r.planted);
     ++tried;
     // Along the left ankle's way: beside the right ankle where it stood
@@ -403,41 +405,15 @@ TEST(Footsteps, AFootDoesNotCrossOverTheOneThatLifts) {
 // 9). A sprinter's foot keeps the full 0.55 (there the 0.85 m a frame over
 // the grass binds first).
 TEST(Footsteps, ALandingFootStepsNoFurtherPastTheHipThanAHumanLands) {
-  FootstepParams prm;
-  const float dt = 0.05f;
   for (float v : {5.0f, 9.0f}) {
-    FootstepState s;
-    FootstepInput in;
-    in.dt = dt;
-    FootstepOutput out;
-    step_footsteps(s, in, prm, out);
-    s.moving = true;
-    s.speed = v;
-    s.run = 1;
-    s.vx = v;
-    s.phase = 0.45f;
-    FootState& r = s.feet[0];
-    FootState& l = s.feet[1];
-    r.planted = true;
-    r.x = 0.1f;
-    r.y = 0.11f;
-    r.stance_s = 0.05f;
     // The left foot 0.7 m behind the hip, at the end of its swing.
-    l.planted = false;
-    l.cx = l.ax = -0.7f;
-    l.cy = l.ay = -0.11f;
-    l.ah = 0.1f;
-    l.bx = 0.3f;
-    l.by = -0.11f;
-    l.u = 0.97f;
-    l.phase_left = 0.5f;
-    l.since_landing = 20;
-    in.x = v * dt;
-    for (int k = 0; k < kPathAhead; ++k) in.ahead_x[k] = in.x + v * dt * static_cast<float>(k + 1);
-    in.ahead_n = kPathAhead;
+    FootstepState s =
+        in_stride({.v = v, .run = 1, .phase = 0.45f, .rx = 0.1f, .ry = 0.11f, .lx = -0.7f, .ly = -0.11f, .u = 0.97f});
+    const FootState& l = s.feet[1];
     const float was_x = l.cx, was_y = l.cy;
-    step_footsteps(s, in, prm, out);
-    const float past = std::hypot(l.cx - was_x - v * dt, l.cy - was_y);
+    FootstepOutput out;
+    step_footsteps(s, on_path(v * 0.05f, 0, v, 0), FootstepParams{}, out);
+    const float past = std::hypot(l.cx - was_x - v * 0.05f, l.cy - was_y);
     EXPECT_LE(past, (v < 8.0f ? 0.45f : 0.55f) + 1e-4f) << v << " m/s";
     EXPECT_GT(past, 0.3f) << v << " m/s";  // it went on
   }
