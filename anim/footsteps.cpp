@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "anim/body_frame.hpp"
+#include "anim/foot_passing.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/portable_math.hpp"
 #include "anim/segment_distance.hpp"
@@ -26,7 +27,6 @@ constexpr float kSwingPastHipM = 0.55f;  // m a frame, a swinging ankle relative
 constexpr float kLandingPastHipM = 0.45f;
 constexpr float kLandingBoundBelow = 8.0f;
 constexpr float kApproachSlope = 0.4f;  // m up per m still to travel, coming down
-constexpr float kPassLength = 0.32f;    // m along the body within which two feet are side by side
 // m between two soles' centre lines when one lands: the boxes are 0.10 m
 // wide (the quality tool's feet too close: nearer than 0.05 m).
 constexpr float kSolesApartM = 0.11f;
@@ -479,54 +479,25 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
         dx = pdx + rx * past / rn;
         dy = pdy + ry * past / rn;
       }
-      float ox, oy, oh;
-      if (o.planted) planted_ankle(o.x, o.y, o.yaw, o.pitch, ox, oy, oh);
-      else { ox = o.cx; oy = o.cy; }
-      float was_bx, was_bz, obx, obz;
-      body.to_body(f.cx, f.cy, was_bx, was_bz);
-      body.to_body(ox, oy, obx, obz);
+      // It passes the other foot on its own side, a sole's width clear
+      // (foot_passing.hpp).
+      PassingStep pass;
+      pass.side = kSide[i];
+      pass.from_x = f.cx;
+      pass.from_y = f.cy;
+      float oh;
+      if (o.planted) planted_ankle(o.x, o.y, o.yaw, o.pitch, pass.other_x, pass.other_y, oh);
+      else { pass.other_x = o.cx; pass.other_y = o.cy; }
+      pass.other_stood = planted_before[1 - i];
+      pass.stood_x = stood_x[1 - i];
+      pass.stood_y = stood_y[1 - i];
+      pass.min_gap = prm.min_gap;
+      pass.root_dx = pdx;
+      pass.root_dy = pdy;
+      pass.past_hip = past;
       f.cx += dx;
       f.cy += dy;
-      // It passes the other foot on its own side, a sole's width clear.
-      float fbx, fbz;
-      body.to_body(f.cx, f.cy, fbx, fbz);
-      const auto beside = [&](float bx) { return std::fabs(bx - obx) < kPassLength; };
-      const auto side_gap = [&](float bz) { return kSide[i] * (bz - obz); };
-      // Nor on its way there past a foot that stood on the grass as the
-      // frame began, one lifting on this frame too: the clients' blend
-      // starts from it (game 2 seq 4284, right 10: the left foot crossed
-      // over the right one as it lifted, 0.5 m in one frame).
-      bool through = false;
-      if (planted_before[1 - i]) {
-        float sbx, sbz;
-        body.to_body(stood_x[1 - i], stood_y[1 - i], sbx, sbz);
-        for (float t : {0.25f, 0.5f, 0.75f, 1.0f}) {
-          const float bx = was_bx + (fbx - was_bx) * t, bz = was_bz + (fbz - was_bz) * t;
-          through = through || (std::fabs(bx - sbx) < kPassLength && kSide[i] * (bz - sbz) < 0.0f);
-        }
-        // It passes on its own side of both places of the other foot.
-        if (through) {
-          obx = sbx;
-          obz = kSide[i] * (sbz - obz) > 0.0f ? sbz : obz;
-        }
-      }
-      if (through || (beside(fbx) && side_gap(fbz) < prm.min_gap)) {
-        // A foot left crossed behind (or before) the other one by a fast
-        // turn uncrosses a pass length off, and passes on the next frame:
-        // pushed aside within the pass length, its leg swept through the
-        // other one (game 2 seq 11568, right 5; seq 3886, right 5, crossed
-        // 0.31 m behind).
-        if (side_gap(was_bz) < 0.0f && beside(fbx)) fbx = obx + std::copysign(kPassLength, was_bx - obx);
-        fbz = obz + kSide[i] * prm.min_gap;
-        // Still no faster past the hip than the bound above.
-        const float from_x = f.cx - dx, from_y = f.cy - dy;
-        body.to_field(fbx, fbz, f.cx, f.cy);
-        const float qx = f.cx - from_x - pdx, qy = f.cy - from_y - pdy, qn = pm::hypot(qx, qy);
-        if (qn > past) {
-          f.cx = from_x + pdx + qx * past / qn;
-          f.cy = from_y + pdy + qy * past / qn;
-        }
-      }
+      pass_other_foot(body, pass, f.cx, f.cy);
     }
     // It lands on its spot, within reach of the hip at the next frame;
     // else it swings on for a frame (it stays up: swing_ankle's approach).
