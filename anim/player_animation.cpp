@@ -41,10 +41,12 @@ constexpr float kContactFrameS = 0.02f;
 // A kick's support foot held up to this far (m, and this high) from its spot
 // as it plants is planted where it is.
 constexpr float kSupportReanchorM = 0.4f;
-// Turn-outs and checks of the clients' drawn travel after the check held a
-// leg back (below). On the two full games 3, 4 and 8 all left them apart;
-// each pair costs a separation and a check, on a few hundred frames a game.
-constexpr int kDrawnRetries = 4;
+// Turn-outs, each followed by a check of the clients' drawn travel, after
+// the check held a leg back (below). On the two full games 3, 4 and 8
+// retries all left them apart; each pair costs a separation and a check,
+// on a few hundred frames a game. The fifth was a turn-out left unchecked
+// until session 34.
+constexpr int kDrawnTurnsApart = 5;
 // How many times the legs are kept apart as the clients draw the frame,
 // each followed by resting on the grass again.
 constexpr int kDrawnApartTries = 5;
@@ -506,20 +508,15 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     };
     if (hold_drawn()) {
       // A leg held back may come back into the other one (game 2 seq 9484,
-      // feet 3 mm too close): it is turned out again and checked again
-      // until a check lets it be, and if one still holds it after
-      // kDrawnRetries, turned out a last time and held back once more.
-      // Left at that last turn, a foot passed the pop bound (game 1 seq
-      // 8794, right 9: 0.61 m a frame at 60 Hz, session 34); the drawn-leg
-      // check below keeps the legs apart in the blend.
+      // feet 3 mm too close): it is turned out again and checked again,
+      // kDrawnTurnsApart times at most, until a check lets it be. Every
+      // turn is checked: left at the last one, a foot passed the pop bound
+      // (game 1 seq 8794, right 9: 0.61 m a frame at 60 Hz, session 34);
+      // the drawn-leg check below keeps the legs apart in the blend.
       bool held = true;
-      for (int k = 0; k < kDrawnRetries && held && own_feet && !contact; ++k) {
+      for (int k = 0; k < kDrawnTurnsApart && held && own_feet && !contact; ++k) {
         separate_legs_again(limits_from, body, pelvis_h, ctx.last_angles, &ctx.ankles, lo.planted, a);
         held = hold_drawn();
-      }
-      if (held && own_feet && !contact) {
-        separate_legs_again(limits_from, body, pelvis_h, ctx.last_angles, &ctx.ankles, lo.planted, a);
-        hold_drawn();
       }
       rest_on_grass(8.0f);
     }
