@@ -324,12 +324,15 @@ constexpr Bounds kAt60HzHalfPhase{0.20, 0.50, 0.50, 0.5, 0.02, 0.03, 0, 60, 45, 
 
 // At the other six phases of anim/README.md's eight (0.1, 0.25, 0.35, 0.6,
 // 0.75, 0.85), measured in session 34: every target holds but the legs,
-// 0/0/1 at most at a phase (game 1 at 0.85, game 2 at 0.35 and 0.85).
+// 0/0/1 at most at a phase (game 1 at 0.85, game 2 at 0.35 and 0.85). With
+// the drawn check's search over every close stretch (session 35): game 2
+// at 0.6 only (seq 11923, left 3, where the clients' step turns the feet
+// through each other in 1/100 of the frame).
 constexpr Bounds kAt60HzOtherPhases{0.20, 0.50, 0.50, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 0, 0, 1, 0, 150, 0.02, 4.5,
                                     -0.02, 0.31};
 // Legs too close summed over the eight phases: 1 and 2 in session 34 (3
-// and 18 before it).
-constexpr long kLegsCloseEightPhases = 2;
+// and 18 before it), 0 and 1 in session 35.
+constexpr long kLegsCloseEightPhases = 1;
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
   SCOPED_TRACE(what);
