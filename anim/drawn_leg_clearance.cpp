@@ -45,6 +45,15 @@ constexpr float kHandOffM = -0.01f;
 constexpr float kRefineBelowM = 0.05f;
 constexpr int kSplits = 3;
 constexpr int kRefineRounds = 8;
+// The drawn points whose feet's way (feet_way_turns) is kept: at most the
+// first one, the five steps between the frames, two more in each of the
+// six stretches and the golden-section search's ten (28).
+constexpr std::size_t kMaxParted = 28;
+// A stretch between two drawn points over which the feet's way turns more
+// than kWayTurnDeg (feet_way_turns) is drawn at kTurnPoints - 1 points
+// between them.
+constexpr float kWayTurnDeg = 30.0f;
+constexpr int kTurnPoints = 16;
 
 PlayerPose pose_of(const DrawnRoot& r, std::span<const float> angles) {
   PlayerPose p;
@@ -83,6 +92,39 @@ struct Drawn {
   float slide[2] = {0, 0};  // m over the grass while the sole is on it at both ends of a third
 };
 static_assert(kDrawnSteps % 3 == 0, "a third of the frame is a whole number of steps");
+
+// Where the way the clients' step parts the feet turns fast between two
+// neighbouring drawn points, the step may fail to hold them apart in a
+// sliver between: as their centre lines pass each other the way swings
+// through one in which the leg's turn, within its bounds, moves the foot
+// too little (game 2 seq 11923, left 3: the way swung 75 deg from t =
+// 0.196 to 0.222, and from 0.199 to 0.204 the feet were drawn up to 1.1
+// cm inside each other). No search over the clearance finds so narrow a
+// dip, so such a stretch is drawn at kTurnPoints points. `parted`: the
+// points drawn (t, way), `draw(t, way)` draws another. Returns the least
+// clearance found there (INFINITY when the way never turns that fast).
+template <typename Draw>
+Drawn feet_way_turns(const LegBlend& legs, Draw draw, std::pair<float, glm::vec3>* parted, std::size_t n) {
+  Drawn d;
+  std::sort(parted, parted + n, [](const auto& p, const auto& q) { return p.first < q.first; });
+  const float cos_turn = pm::cos(kWayTurnDeg * kDeg);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const glm::vec3 u = parted[i].second, v = parted[i + 1].second;
+    const float lu = glm::length(u), lv = glm::length(v);
+    if (lu <= 0.0f || lv <= 0.0f || glm::dot(u, v) >= cos_turn * lu * lv) continue;
+    const float lo = parted[i].first, hi = parted[i + 1].first;
+    glm::vec3 way;
+    for (int k = 1; k < kTurnPoints; ++k) {
+      const float t = lo + (hi - lo) * static_cast<float>(k) / kTurnPoints;
+      const float c = legs.clearance(draw(t, way));
+      if (c < d.clearance) {
+        d.clearance = c;
+        d.at = t;
+      }
+    }
+  }
+  return d;
+}
 // With `beat`, the frame is drawn first at `first`, and drawing stops
 // (`beaten`, the rest unset) as soon as the legs come no clearer than
 // `beat` anywhere: a candidate turn that does not beat the best so far
@@ -91,9 +133,19 @@ static_assert(kDrawnSteps % 3 == 0, "a third of the frame is a whole number of s
 // 1.6 to 3.0 s a game).
 Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& pb, float beat = -INFINITY,
                   float first = 0.5f) {
-  auto drawn_at = [&](float t) {
+  // Each point drawn, with the way the clients' step parted the feet there
+  // (LegBlend::apply's feet_way; kept for the first kMaxParted points).
+  std::array<std::pair<float, glm::vec3>, kMaxParted> parted;
+  std::size_t parted_n = 0;
+  auto drawn_way = [&](float t, glm::vec3& way) {
     PlayerPose o = blend_of(pa, pb, t);
-    legs.apply(pa, pb, t, o);
+    legs.apply(pa, pb, t, o, &way);
+    return o;
+  };
+  auto drawn_at = [&](float t) {
+    glm::vec3 way;
+    PlayerPose o = drawn_way(t, way);
+    if (parted_n < parted.size()) parted[parted_n++] = {t, way};
     return o;
   };
   Drawn d;
@@ -164,6 +216,11 @@ Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& 
     if (std::min(f1, f2) < d.clearance) {
       d.clearance = std::min(f1, f2);
       d.at = f1 < f2 ? x1 : x2;
+    }
+    const Drawn through = feet_way_turns(legs, drawn_way, parted.data(), parted_n);
+    if (through.clearance < d.clearance) {
+      d.clearance = through.clearance;
+      d.at = through.at;
     }
     if (beaten(d.clearance, d.at)) return d;
   }

@@ -151,7 +151,8 @@ void LegBlend::apply(const PoseFrame& a, const PoseFrame& b, float t, PoseFrame&
   }
 }
 
-void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o) const {
+void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o, glm::vec3* feet_way) const {
+  if (feet_way != nullptr) *feet_way = glm::vec3(0.0f);
   if (!ready() || t <= 0.0f || t >= 1.0f) return;
   const auto& joints = skeleton_.joints;
   auto local = [&](const Joint& j, const float* angles) { return local_model(joints, j.index, j.first_angle, angles); };
@@ -248,7 +249,7 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
                         sideways / kApartLeverM * ramp});
     along[i] = std::min(room[i], std::max(0.0f, kApartTravelM - travel[i]) / kApartLeverM * ramp);
   }
-  keep_apart(free, room, along, o);
+  keep_apart(free, room, along, o, feet_way);
 }
 
 void LegBlend::turn_thigh(const Leg& leg, const glm::mat4& pelvis, const glm::mat4& thigh, const glm::mat3& rotation,
@@ -327,7 +328,8 @@ float LegBlend::clearance(const PlayerPose& o) const {
   return nearest(thigh, shin, foot).clearance;
 }
 
-void LegBlend::keep_apart(const float free[2], float room[2], float along[2], PlayerPose& o) const {
+void LegBlend::keep_apart(const float free[2], float room[2], float along[2], PlayerPose& o,
+                          glm::vec3* feet_way) const {
   const auto& joints = skeleton_.joints;
   float* q = o.angles.data();
   auto local = [&](const Joint& j) { return local_model(joints, j.index, j.first_angle, q); };
@@ -371,6 +373,7 @@ void LegBlend::keep_apart(const float free[2], float room[2], float along[2], Pl
     const glm::vec3 hip[2] = {glm::vec3(thigh[0][3]), glm::vec3(thigh[1][3])};
     const glm::vec3 gap = closest.on_first - closest.on_second;
     const bool between_feet = feet && glm::length(gap) >= 1e-3f;
+    if (round == 0 && between_feet && feet_way != nullptr) *feet_way = gap;
     for (std::size_t i = 0; i < 2; ++i) {
       if (share[i] <= 0.0f) continue;
       const glm::vec3 lever = (i == 0 ? closest.on_first : closest.on_second) - hip[i];

@@ -67,8 +67,12 @@ class LegBlend {
   // left as blended (a teleport is not animated).
   void apply(const PoseFrame& a, const PoseFrame& b, float t, PoseFrame& out, float teleport_m = 5.0f) const;
 
-  // One player: `o` is the blend of `pa` and `pb` at `t`.
-  void apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o) const;
+  // One player: `o` is the blend of `pa` and `pb` at `t`. With `feet_way`:
+  // the way the step's first round parted the feet along their line (the
+  // first leg's nearest point from the other's, body space), or zero when
+  // it did not (anim::keep_legs_apart_drawn reads where that way turns
+  // fast: the step may let the feet through each other there).
+  void apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o, glm::vec3* feet_way = nullptr) const;
 
   // How far apart the legs' boxes are in pose `o`: the least distance
   // between the centre lines of the two thighs, the two shins and the two
@@ -151,7 +155,7 @@ class LegBlend {
   // both frames, t leaving it, 1 - t landing, 0 on it); `room`: how far each leg may
   // still turn (rad), and `along` how far in a turn that may carry its
   // ankle along its travel; both used up as it turns.
-  void keep_apart(const float free[2], float room[2], float along[2], PlayerPose& o) const;
+  void keep_apart(const float free[2], float room[2], float along[2], PlayerPose& o, glm::vec3* feet_way) const;
 
   const SkeletonDef& skeleton_;
   std::array<Leg, 2> leg_{};

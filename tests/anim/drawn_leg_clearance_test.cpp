@@ -67,13 +67,13 @@ struct Case {
   float drawn() const { return drawn_leg_clearance(legs, last, now, a); }
 };
 
-// The legs' least clearance as drawn at 600 points of the frame (the
+// The legs' least clearance as drawn at `points` points of the frame (the
 // clients' blend, proto/SPEC.md 4.7 step 1, then their step 2): what a
 // display shows, whatever its phase.
-float densely_drawn(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& pb) {
+float densely_drawn(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& pb, int points = 600) {
   float least = INFINITY;
-  for (int n = 1; n <= 600; ++n) {
-    const float t = static_cast<float>(n) / 600.0f;
+  for (int n = 1; n <= points; ++n) {
+    const float t = static_cast<float>(n) / static_cast<float>(points);
     PlayerPose o = pa;
     o.x += (pb.x - pa.x) * t;
     o.y += (pb.y - pa.y) * t;
@@ -132,6 +132,37 @@ TEST(KeepLegsApartDrawn, ADipBesideTheNearestCheckedPointIsFoundToo) {
   const float dense = densely_drawn(legs, last, game_pose(now.x, now.y, now.height, now.heading, a));
   ASSERT_LT(dense, 0.0f);
   EXPECT_NEAR(drawn_leg_clearance(legs, last, now, a), dense, 0.001f);
+}
+
+TEST(KeepLegsApartDrawn, FeetTheClientsStepLetsThroughInASliverOfTheFrameAreTurnedApart) {
+  // Game 2 seq 11922 -> 11923, left 3, in flight at 6 m/s: the clients'
+  // step holds the feet 7.5 mm apart up to t = 0.199, but the way it
+  // parts them swings 75 deg as their centre lines pass, and from 0.199 to
+  // 0.204 it lets them 1.1 cm into each other. Searched over the
+  // clearance alone, the check found 7.5 mm and let the frame be; a
+  // display at phase 0.6 drew the feet through each other (t = 0.2).
+  const PlayerPose last = game_pose(
+      -14.83f, 19.34f, 0.94f, 92.967f,
+      {-2.58f,  -1.0f,   -0.95f, 6.48f,   -0.6f,  0.64f,   -13.67f, 0.54f,  -0.3f,  -20.6f, 0.54f,   -0.3f,
+       5.24f,   -12.69f, 0.09f,  11.88f,  0.29f,  -0.3f,   -11.59f, 12.57f, 0.09f,  11.88f, 0.29f,   -0.3f,
+       -7.33f,  26.23f,  16.38f, -33.23f, 14.25f, -25.05f, 8.51f,   22.42f, 3.51f,  -46.1f, 33.06f,  -21.09f});
+  // The frame as the animator made it, before the stream's rounding.
+  std::array<float, dof::kCount> a = {
+      -3.9852f, -0.8f,  -0.0535f, 8.9667f,  -1.2f,  0.0535f,  -11.7926f, 1.0f,     0.0f,    -17.6889f, 0.6f,  0.0f,
+      7.9556f,  -13.0f, 0.0f,     12.0f,    0.0f,   0.0f,     -15.9556f, 13.0f,    0.0f,    12.0f,     0.0f,  0.0f,
+      -14.8759f, 29.8392f, 27.1234f, -29.2078f, 16.9799f, -28.0f, 41.2872f, -15.0536f, 5.2141f, -92.349f, 33.0f, 19.4348f};
+  const DrawnRoot now{-15.13265f, 19.3110f, 0.928172f, 104.685974f};
+  const LegBlend legs(human_skeleton());
+  auto next = [&] { return game_pose(now.x, now.y, now.height, now.heading, a); };
+  ASSERT_LT(densely_drawn(legs, last, next(), 6000), -0.005f);
+  EXPECT_LT(drawn_leg_clearance(legs, last, now, a), 0.0f);
+  // Both feet in the air: the check turns a leg so that no phase of the
+  // display draws the feet inside each other.
+  const bool none_planted[2] = {false, false};
+  std::array<float, dof::kCount> last_angles{};
+  std::copy_n(last.angles.begin(), dof::kCount, last_angles.begin());
+  EXPECT_TRUE(keep_legs_apart_drawn(legs, human_skeleton(), nullptr, last, last_angles, now, none_planted, a));
+  EXPECT_GE(densely_drawn(legs, last, next(), 6000), 0.0f);
 }
 
 TEST(KeepLegsApartDrawn, LegsThatPassThroughEachOtherInTheBlendAreTurnedApartAtTheFrame) {

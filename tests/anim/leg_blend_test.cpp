@@ -257,17 +257,31 @@ PlayerPose real_frame(float x, float y, float z, float heading, std::initializer
   return p;
 }
 
-TEST(LegBlend, FeetThatMeetInTheBlendPartAlongTheLineBetweenThem) {
-  const PlayerPose a = real_frame(
+// Two frames of a real game whose feet, apart at both, meet in the blend.
+struct FeetMeeting {
+  PlayerPose a = real_frame(
       -32.95f, -19.68f, 0.96f, 134.5055f,
       {0.39f,  -1.0f,  0.04f,  -0.45f, -0.6f,   -0.35f,  2.17f,   0.54f,  -0.3f,  3.16f,  0.54f,  -0.3f,
        -3.67f, -18.63f, 0.09f, 11.88f, 0.29f,   -0.3f,   -2.68f,  12.57f, 0.09f,  11.88f, 0.29f,  -0.3f,
        -1.39f, -30.2f, -38.07f, -32.24f, 16.23f, 24.45f, -14.26f, -23.12f, -34.11f, -11.45f, 10.29f, 27.42f});
-  const PlayerPose b = real_frame(
+  PlayerPose b = real_frame(
       -32.97f, -19.6f, 0.95f, 135.4945f,
       {1.38f,  -1.0f,  1.03f,  -3.42f, -1.59f,  -1.34f,  4.15f,   0.54f,  -0.3f,  7.12f,  0.54f,  -0.3f,
        -7.63f, -12.69f, 0.09f, 11.88f, 0.29f,   -0.3f,   0.29f,   12.57f, 0.09f,  11.88f, 0.29f,  -0.3f,
        33.26f, -11.39f, -14.31f, -61.94f, 28.11f, 0.69f, -19.21f, -26.09f, -33.12f, -11.45f, 12.27f, 28.41f});
+  // The blend at `t` as the clients draw it before their step.
+  PlayerPose blended(float t) const {
+    PlayerPose drawn = angle_blend(a, b, t);
+    drawn.heading = a.heading + (b.heading - a.heading) * t;
+    drawn.y = a.y + (b.y - a.y) * t;
+    return drawn;
+  }
+};
+
+TEST(LegBlend, FeetThatMeetInTheBlendPartAlongTheLineBetweenThem) {
+  const FeetMeeting m;
+  const PlayerPose& a = m.a;
+  const PlayerPose& b = m.b;
   ASSERT_GT(sole(a, 0), LegBlend::kContactM);
   ASSERT_GT(sole(a, 1), LegBlend::kContactM);
   ASSERT_GT(sole(b, 0), LegBlend::kContactM);
@@ -277,12 +291,28 @@ TEST(LegBlend, FeetThatMeetInTheBlendPartAlongTheLineBetweenThem) {
   ASSERT_LT(legs_apart(angle_blend(a, b, 1.0f / 3.0f)), -0.005f) << "the case must bring the feet together";
   const LegBlend blend(human_skeleton());
   for (float t : {1.0f / 3.0f, 0.5f, 2.0f / 3.0f}) {
-    PlayerPose drawn = angle_blend(a, b, t);
-    drawn.heading = a.heading + (b.heading - a.heading) * t;
-    drawn.y = a.y + (b.y - a.y) * t;
+    PlayerPose drawn = m.blended(t);
     blend.apply(a, b, t, drawn);
     EXPECT_GE(legs_apart(drawn), 0.0f) << t;
   }
+}
+
+TEST(LegBlend, ItTellsTheWayItPartedTheFeet) {
+  // keep_legs_apart_drawn reads the way to find where it turns fast.
+  const FeetMeeting m;
+  const LegBlend blend(human_skeleton());
+  const float t = 1.0f / 3.0f;
+  PlayerPose told = m.blended(t), untold = m.blended(t);
+  glm::vec3 way(1.0f);
+  blend.apply(m.a, m.b, t, told, &way);
+  blend.apply(m.a, m.b, t, untold);
+  EXPECT_GT(glm::length(way), 1e-3f);  // the first leg's nearest point from the other's
+  for (int d = 0; d < dof::kCount; ++d) EXPECT_EQ(told.angles[d], untold.angles[d]) << d;  // told, not changed
+  // Legs apart (frame a drawn from itself): nothing parted, no way.
+  PlayerPose still = m.a;
+  way = glm::vec3(1.0f);
+  blend.apply(m.a, m.a, 0.5f, still, &way);
+  EXPECT_EQ(way, glm::vec3(0.0f));
 }
 
 TEST(LegBlend, TheTurnOutGrowsFromNothingAtEitherFrame) {
