@@ -137,9 +137,10 @@ Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& 
   // (LegBlend::apply's feet_way; kept for the first kMaxParted points).
   std::array<std::pair<float, glm::vec3>, kMaxParted> parted;
   std::size_t parted_n = 0;
+  const LegBlend::Frames frames = legs.frames(pa, pb);  // the same at every point drawn
   auto drawn_way = [&](float t, glm::vec3& way) {
     PlayerPose o = blend_of(pa, pb, t);
-    legs.apply(pa, pb, t, o, &way);
+    legs.apply(frames, t, o, &way);
     return o;
   };
   auto drawn_at = [&](float t) {

@@ -48,11 +48,6 @@ struct FieldOf {
   }
 };
 
-// Where one pose puts a foot.
-struct FootPlace {
-  glm::vec3 ankle{0.0f};  // field space (x, height, y)
-  float sole = 0;         // the foot box's lowest corner above the grass (m)
-};
 
 // Rodrigues: the rotation by `angle` (rad) about unit axis `n`,
 // cos I + (1 - cos) n n^T + sin [n]x.
@@ -151,28 +146,59 @@ void LegBlend::apply(const PoseFrame& a, const PoseFrame& b, float t, PoseFrame&
   }
 }
 
+LegBlend::Frames LegBlend::frames(const PlayerPose& pa, const PlayerPose& pb) const {
+  Frames f;
+  if (!ready()) return f;
+  const auto& joints = skeleton_.joints;
+  auto local = [&](const Joint& j, const float* angles) { return local_model(joints, j.index, j.first_angle, angles); };
+  // Where a pose puts a foot: its ankle (field space) and its box's lowest corner.
+  auto place = [&](const Leg& leg, const PlayerPose& p) {
+    const glm::mat4 m = root_model_of(joints[0], p.angles.data(), p.z) * local(leg.thigh, p.angles.data()) *
+                        local(leg.shin, p.angles.data()) * local(leg.foot, p.angles.data());
+    return FootPlace{FieldOf{BodyFrame(p.x, p.y, p.heading)}.point(glm::vec3(m[3])),
+                     sole_height(joints[static_cast<std::size_t>(leg.foot.index)].segment, m)};
+  };
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Leg& leg = leg_[i];
+    const FootPlace fa = place(leg, pa), fb = place(leg, pb);
+    f.place[i][0] = fa;
+    f.place[i][1] = fb;
+    // The ankle's travel about the root over the frame (field space).
+    f.travel[i] = glm::length((fb.ankle - glm::vec3(pb.x, pb.z, pb.y)) - (fa.ankle - glm::vec3(pa.x, pa.z, pa.y)));
+    // The thigh's turn over the frame (deg): the angle between its local
+    // rotations in the two frames.
+    const Joint& th = leg.thigh;
+    const std::string& dofs = joints[static_cast<std::size_t>(th.index)].dofs;
+    const glm::mat3 ra = joint_rotation(dofs, pa.angles.data() + th.first_angle);
+    const glm::mat3 rb = joint_rotation(dofs, pb.angles.data() + th.first_angle);
+    const float tr = ra[0][0] * rb[0][0] + ra[0][1] * rb[0][1] + ra[0][2] * rb[0][2] + ra[1][0] * rb[1][0] +
+                     ra[1][1] * rb[1][1] + ra[1][2] * rb[1][2] + ra[2][0] * rb[2][0] + ra[2][1] * rb[2][1] +
+                     ra[2][2] * rb[2][2];
+    f.thigh_turn_deg[i] = pm::acos(std::clamp(0.5f * (tr - 1.0f), -1.0f, 1.0f)) / kDeg;
+  }
+  return f;
+}
+
 void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o, glm::vec3* feet_way) const {
+  if (feet_way != nullptr) *feet_way = glm::vec3(0.0f);
+  if (!ready() || t <= 0.0f || t >= 1.0f) return;
+  apply(frames(pa, pb), t, o, feet_way);
+}
+
+void LegBlend::apply(const Frames& f, float t, PlayerPose& o, glm::vec3* feet_way) const {
   if (feet_way != nullptr) *feet_way = glm::vec3(0.0f);
   if (!ready() || t <= 0.0f || t >= 1.0f) return;
   const auto& joints = skeleton_.joints;
   auto local = [&](const Joint& j, const float* angles) { return local_model(joints, j.index, j.first_angle, angles); };
   auto root_model = [&](const float* angles, float height) { return root_model_of(joints[0], angles, height); };
-  // Where a pose puts a foot: its ankle (field space) and its box's lowest corner.
-  auto place = [&](const Leg& leg, const PlayerPose& p) {
-    const glm::mat4 m = root_model(p.angles.data(), p.z) * local(leg.thigh, p.angles.data()) *
-                        local(leg.shin, p.angles.data()) * local(leg.foot, p.angles.data());
-    return FootPlace{FieldOf{BodyFrame(p.x, p.y, p.heading)}.point(glm::vec3(m[3])),
-                     sole_height(joints[static_cast<std::size_t>(leg.foot.index)].segment, m)};
-  };
 
   const FieldOf body{BodyFrame(o.x, o.y, o.heading)};
   float free[2] = {0, 0};  // keep_apart's share whatever the drawn sole (leg_blend.hpp)
-  float travel[2] = {0, 0};
+  const float* travel = f.travel;
   for (std::size_t i = 0; i < 2; ++i) {
     const Leg& leg = leg_[i];
-    const FootPlace fa = place(leg, pa), fb = place(leg, pb);
-    // The ankle's travel about the root over the frame (field space).
-    travel[i] = glm::length((fb.ankle - glm::vec3(pb.x, pb.z, pb.y)) - (fa.ankle - glm::vec3(pa.x, pa.z, pa.y)));
+    const FootPlace& fa = f.place[i][0];
+    const FootPlace& fb = f.place[i][1];
     const bool ca = fa.sole < kContactM, cb = fb.sole < kContactM;
     const bool in_air = !ca && !cb;
     free[i] = in_air ? 1.0f : ca && !cb ? t : !ca && cb ? 1.0f - t : 0.0f;
@@ -233,14 +259,7 @@ void LegBlend::apply(const PlayerPose& pa, const PlayerPose& pb, float t, Player
   // travel rather than in quadrature.
   float room[2], along[2];
   for (std::size_t i = 0; i < 2; ++i) {
-    const Joint& th = leg_[i].thigh;
-    const std::string& dofs = joints[static_cast<std::size_t>(th.index)].dofs;
-    const glm::mat3 ra = joint_rotation(dofs, pa.angles.data() + th.first_angle);
-    const glm::mat3 rb = joint_rotation(dofs, pb.angles.data() + th.first_angle);
-    const float tr = ra[0][0] * rb[0][0] + ra[0][1] * rb[0][1] + ra[0][2] * rb[0][2] + ra[1][0] * rb[1][0] +
-                     ra[1][1] * rb[1][1] + ra[1][2] * rb[1][2] + ra[2][0] * rb[2][0] + ra[2][1] * rb[2][1] +
-                     ra[2][2] * rb[2][2];
-    const float speed = pm::acos(std::clamp(0.5f * (tr - 1.0f), -1.0f, 1.0f)) / kDeg;
+    const float speed = f.thigh_turn_deg[i];
     // The turn's sideways move of the ankle (about kApartLeverM from the
     // hip) added to its travel stays within kApartTravelM a frame.
     const float sideways = std::sqrt(std::max(0.0f, kApartTravelM * kApartTravelM - travel[i] * travel[i]));

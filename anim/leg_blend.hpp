@@ -74,6 +74,23 @@ class LegBlend {
   // fast: the step may let the feet through each other there).
   void apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o, glm::vec3* feet_way = nullptr) const;
 
+  // What the step takes from the two frames alone, the same at every `t`:
+  // where each pose puts each foot, each ankle's travel about the root and
+  // each thigh's turn over the frame. A caller that draws one pair of
+  // frames at many points (anim::keep_legs_apart_drawn) takes it once.
+  struct FootPlace {
+    glm::vec3 ankle{0.0f};  // field space (x, height, y)
+    float sole = 0;         // the foot box's lowest corner above the grass (m)
+  };
+  struct Frames {
+    FootPlace place[2][2];  // [leg][frame a, frame b]
+    float travel[2] = {0, 0};
+    float thigh_turn_deg[2] = {0, 0};
+  };
+  Frames frames(const PlayerPose& pa, const PlayerPose& pb) const;
+  // apply() given frames(pa, pb): the same pose, to the last bit.
+  void apply(const Frames& f, float t, PlayerPose& o, glm::vec3* feet_way = nullptr) const;
+
   // How far apart the legs' boxes are in pose `o`: the least distance
   // between the centre lines of the two thighs, the two shins and the two
   // feet, less half the wider box's width (m; anim-quality's clearance,
