@@ -268,9 +268,11 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
     turn = std::max(turn, std::fabs(a[static_cast<std::size_t>(d)] - last.angles[static_cast<std::size_t>(d)]));
   if (turn < kStillDeg) return false;
   PlayerPose pb = pose_of(now, a);
-  if (legs.clearance(blend_of(last, pb, 0.5f)) >= kMidGateM) return false;
-  float plain = INFINITY;
-  for (int n = 1; n < kDrawnSteps; ++n) plain = std::min(plain, legs.clearance(blend_of(last, pb, step_t(n))));
+  const float mid = legs.clearance(blend_of(last, pb, 0.5f));
+  if (mid >= kMidGateM) return false;
+  float plain = mid;  // the middle step is the half-way point, drawn already
+  for (int n = 1; n < kDrawnSteps; ++n)
+    if (2 * n != kDrawnSteps) plain = std::min(plain, legs.clearance(blend_of(last, pb, step_t(n))));
   if (plain >= kGateM) return false;
   const PlayerPose pa = grid != nullptr ? as_streamed(*grid, last) : last;
   // A turn that clears is drawn once more as the stream will carry the
