@@ -150,7 +150,8 @@ TEST(KeepLegsApartDrawn, FeetTheClientsStepLetsThroughInASliverOfTheFrameAreTurn
   std::array<float, dof::kCount> a = {
       -3.9852f, -0.8f,  -0.0535f, 8.9667f,  -1.2f,  0.0535f,  -11.7926f, 1.0f,     0.0f,    -17.6889f, 0.6f,  0.0f,
       7.9556f,  -13.0f, 0.0f,     12.0f,    0.0f,   0.0f,     -15.9556f, 13.0f,    0.0f,    12.0f,     0.0f,  0.0f,
-      -14.8759f, 29.8392f, 27.1234f, -29.2078f, 16.9799f, -28.0f, 41.2872f, -15.0536f, 5.2141f, -92.349f, 33.0f, 19.4348f};
+      -14.8759f, 29.8392f, 27.1234f, -29.2078f, 16.9799f, -28.0f,
+      41.2872f,  -15.0536f, 5.2141f, -92.349f,  33.0f,    19.4348f};
   const DrawnRoot now{-15.13265f, 19.3110f, 0.928172f, 104.685974f};
   const LegBlend legs(human_skeleton());
   auto next = [&] { return game_pose(now.x, now.y, now.height, now.heading, a); };
