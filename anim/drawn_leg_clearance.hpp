@@ -36,8 +36,10 @@ inline constexpr float kDrawnApartM = 0.005f;
 // `now`, `a`: this frame's root and angles (`a` changed in place).
 // `planted` ([0] right, [1] left): the feet on the grass at this frame,
 // whose legs stay as they are.
-// The blend is checked over the whole frame (kDrawnSteps points of it,
-// then a search between them), since a display draws it at any phase.
+// The blend is checked over the whole frame, since a display draws it at
+// any phase: at kDrawnSteps points, then between them wherever the legs
+// come within 5 cm, and densely where the clients' step turns the way it
+// parts the feet (drawn_leg_clearance.cpp).
 // Where its legs come closer than kDrawnApartM, a leg in the air turns at
 // the hip, kDrawnStepDeg at a time up to kDrawnMostDeg: forward or back
 // (flexion), out (abduction), across (a leg crossed over the other one),

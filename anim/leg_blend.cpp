@@ -48,7 +48,6 @@ struct FieldOf {
   }
 };
 
-
 // Rodrigues: the rotation by `angle` (rad) about unit axis `n`,
 // cos I + (1 - cos) n n^T + sin [n]x.
 glm::mat3 axis_rotation(const glm::vec3& n, float angle) {
