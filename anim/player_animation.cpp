@@ -495,16 +495,25 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
   // pops left (now 1 / 1). A leg held back rests on the grass again.
   if (!in.reset && ctx.ankles.valid && rested) {
     const DrawnRoot from{ctx.ankles.pelvis.x, ctx.ankles.pelvis.y, ctx.ankles.pelvis.z, last_heading};
-    bool keep[2];
+    bool keep[2], landing[2];
     glm::vec3 now_ankle[2];
     for (int i = 0; i < 2; ++i) {
-      keep[i] = lo.planted[i] || skip[i] || (contact && act->kick_foot == i);
+      // A foot landing is held back too: one whose swing the joint speed
+      // limit left short on the frame before reached its spot faster than
+      // a pop (game 1 seq 11260, left 11, landing from 15 cm at 7.8 m/s:
+      // 0.61 m a frame about the pelvis). Held, it is not planted on this
+      // frame; the footsteps keep its spot, and it lands when it reaches it.
+      landing[i] = lo.planted[i] && !ctx.last_planted[i];
+      keep[i] = (lo.planted[i] && !landing[i]) || skip[i] || (contact && act->kick_foot == i);
       body.to_field(rested_ankle[i].x, rested_ankle[i].z, now_ankle[i].x, now_ankle[i].y);
       now_ankle[i].z = rested_ankle[i].y;
     }
     auto hold_drawn = [&] {
-      return limit_drawn_travel(limits_from, from, ctx.last_angles, ctx.ankles.ankle,
-                                DrawnRoot{px, py, pelvis_h, heading}, a, now_ankle, keep) != 0;
+      const int held = limit_drawn_travel(limits_from, from, ctx.last_angles, ctx.ankles.ankle,
+                                          DrawnRoot{px, py, pelvis_h, heading}, a, now_ankle, keep);
+      for (int i = 0; i < 2; ++i)
+        if (landing[i] && (held & (1 << i)) != 0) lo.planted[i] = false;
+      return held != 0;
     };
     if (hold_drawn()) {
       // A leg held back may come back into the other one (game 2 seq 9484,

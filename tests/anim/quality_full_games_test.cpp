@@ -327,6 +327,11 @@ constexpr Bounds kAt60Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 
 // search over every close stretch and about a turn of the feet's way
 // (session 35, anim/drawn_leg_clearance.cpp): 0 and 0, every target at
 // every phase, so kAt60Hz's bounds hold at all eight.
+// Phase 0.45 (session 36): game 1's 8-9 m/s band was 0.51, over the 0.5
+// (0.50 at 0.425; a scan of 40 phases found no other band over it). With a
+// sprinter's swing kept up to 26 cm clear (swing_clearance.hpp) and a
+// landing foot held back as the clients draw it (player_animation.cpp),
+// 0.49 there and every band within 0.5 at all 40; so 0.45 is measured too.
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
   SCOPED_TRACE(what);
@@ -399,9 +404,10 @@ void check_log(const char* name) {
   EXPECT_EQ(half.frames, r60.frames);
   EXPECT_NE(band_mean(half, 5), band_mean(r60, 5));
   expect_within(half, kAt60Hz, "60 Hz, half a drawn frame later\n" + format_close_up({&r20, &half}));
-  // The display's other phases (anim/README.md measures these eight):
-  // every target holds at each.
-  for (double phase : {0.1, 0.25, 0.35, 0.6, 0.75, 0.85}) {
+  // The display's other phases (anim/README.md measures these eight, and
+  // 0.45, where the sprint bands came closest to the target): every target
+  // holds at each.
+  for (double phase : {0.1, 0.25, 0.35, 0.45, 0.6, 0.75, 0.85}) {
     const CloseUpReport r = measure_close_up(view, states, frames, 3, DrawnLegs::LegBlend, phase);
     expect_within(r, kAt60Hz, "60 Hz at phase " + std::to_string(phase) + "\n" + format_close_up({&r20, &r}));
   }
