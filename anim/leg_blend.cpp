@@ -381,21 +381,41 @@ void LegBlend::keep_apart(const float free[2], float room[2], float along[2], Pl
     // Each leg in the air turns at the hip by its share of the shortfall:
     // the angle that moves its nearest point that far away from the other
     // leg's. Thighs and shins move out, away from the other hip. Feet move
-    // apart along the line between their nearest points: they pass each
-    // other front to back as well as side to side, and moved out from the
-    // other hip one may slide along the other or even towards it (a real
-    // case: LegBlend.FeetThatMeetInTheBlendPartAlongTheLineBetweenThem).
-    // On the two full games, feet drawn too close at 60 Hz in four rounds
-    // (before the ease across the grass above): 46 and 39 player-frames
-    // moving out, 30 and 31 along that line.
+    // apart along the line between them: they pass each other front to
+    // back as well as side to side, and moved out from the other hip one
+    // may slide along the other or even towards it (a real case:
+    // LegBlend.FeetThatMeetInTheBlendPartAlongTheLineBetweenThem). On the
+    // two full games, feet drawn too close at 60 Hz in four rounds (before
+    // the ease across the grass above): 46 and 39 player-frames moving
+    // out, 30 and 31 along the line between their nearest points. Each
+    // foot now moves its middle away from the other foot's centre line:
+    // the nearest points jump from end to end of a centre line as one foot
+    // passes the other, and the push turned with them within a frame (game
+    // 1 seq 8801: the feet pushed one way, then the other, turning the
+    // thighs into each other); a middle and its nearest point on a line
+    // move as smoothly as the legs. (The line between the two middles
+    // moves smoothly too, but the check then cleared fewer of the crossing
+    // swings of drawn_leg_clearance_test: anim/README.md, session 37.)
     const glm::vec3 hip[2] = {glm::vec3(thigh[0][3]), glm::vec3(thigh[1][3])};
-    const glm::vec3 gap = closest.on_first - closest.on_second;
-    const bool between_feet = feet && glm::length(gap) >= 1e-3f;
-    if (round == 0 && between_feet && feet_way != nullptr) *feet_way = gap;
+    glm::vec3 gap[2];
+    bool between_feet = feet;
+    if (feet) {
+      glm::vec3 from[2], to[2];
+      for (std::size_t i = 0; i < 2; ++i) {
+        from[i] = glm::vec3(foot[i] * glm::vec4(leg_[i].foot.line_from, 1.0f));
+        to[i] = glm::vec3(foot[i] * glm::vec4(leg_[i].foot.line_to, 1.0f));
+      }
+      for (std::size_t i = 0; i < 2; ++i) {
+        const glm::vec3 middle = 0.5f * (from[i] + to[i]);
+        gap[i] = middle - closest_points(middle, middle, from[1 - i], to[1 - i]).on_second;
+        between_feet = between_feet && glm::length(gap[i]) >= 1e-3f;
+      }
+    }
+    if (round == 0 && between_feet && feet_way != nullptr) *feet_way = gap[0];
     for (std::size_t i = 0; i < 2; ++i) {
       if (share[i] <= 0.0f) continue;
       const glm::vec3 lever = (i == 0 ? closest.on_first : closest.on_second) - hip[i];
-      const glm::vec3 away = between_feet ? (i == 0 ? gap : -gap) : hip[i] - hip[1 - i];
+      const glm::vec3 away = between_feet ? gap[i] : hip[i] - hip[1 - i];
       const float width = glm::length(away);
       if (width < 1e-4f) continue;
       const glm::vec3 axis = glm::cross(lever, away / width);

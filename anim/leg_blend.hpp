@@ -68,10 +68,11 @@ class LegBlend {
   void apply(const PoseFrame& a, const PoseFrame& b, float t, PoseFrame& out, float teleport_m = 5.0f) const;
 
   // One player: `o` is the blend of `pa` and `pb` at `t`. With `feet_way`:
-  // the way the step's first round parted the feet along their line (the
-  // first leg's nearest point from the other's, body space), or zero when
-  // it did not (anim::keep_legs_apart_drawn reads where that way turns
-  // fast: the step may let the feet through each other there).
+  // the way the step's first round parted the feet (the first foot's
+  // middle from the nearest point of the other foot's centre line, body
+  // space), or zero when it did not (anim::keep_legs_apart_drawn reads
+  // where that way turns fast: the step may let the feet through each
+  // other there).
   void apply(const PlayerPose& pa, const PlayerPose& pb, float t, PlayerPose& o, glm::vec3* feet_way = nullptr) const;
 
   // What the step takes from the two frames alone, the same at every `t`:

@@ -261,13 +261,16 @@ void expect_only(int moved, const std::array<float, dof::kCount>& a, const std::
 }
 
 TEST(KeepLegsApartDrawn, ASwingThatCrossesLowLiftsItsFootWithTheKnee) {
-  // From 12 deg back to 32 deg forward, adducted 11 deg (a step that
+  // From 12 deg back to 32 deg forward, adducted 10.5 deg (a step that
   // crosses in front of the planted foot), the knee bending from 20 deg
-  // to 30: from a tenth of the way to three quarters, the swinging foot
-  // passes through the planted one (3.3 cm at the deepest). No turn of the
-  // hip clears it; bending the knee further at the frame lifts the foot as
-  // it passes.
-  RightSwing c(-12.0f, -20.0f, 32.0f, -30.0f, 11.0f, 1.0f);
+  // to 30: the swinging foot passes through the planted one (2.4 cm at the
+  // deepest). No turn of the hip clears it; bending the knee further at
+  // the frame lifts the foot as it passes. (Adducted 11 deg, the knee
+  // cleared it by 7.7 mm while the clients' step parted the feet along
+  // their nearest points; since it parts them from each other's centre
+  // line, 32 deg of knee, the most the check turns, leaves 2.4 mm.
+  // Adducted 11.5 deg or more, neither clears it.)
+  RightSwing c(-12.0f, -20.0f, 32.0f, -30.0f, 10.5f, 1.0f);
   c.expect_crossing();
   const auto before = c.a;
   EXPECT_TRUE(c.keep_apart());

@@ -354,6 +354,7 @@ export function closestPoints(p1, q1, p2, q2, c1, c2) {
 
 const lineFrom = [[0, 0, 0], [0, 0, 0]], lineTo = [[0, 0, 0], [0, 0, 0]];
 const near = [[0, 0, 0], [0, 0, 0]], nearest = [[0, 0, 0], [0, 0, 0]];
+const middle = [[0, 0, 0], [0, 0, 0]], onOther = [[0, 0, 0], [0, 0, 0]], scratch = [0, 0, 0];
 const share = [0, 0];
 const PAIRS = [['thigh', 'rThigh', 'pThigh'], ['shin', 'rShin', 'pShin'], ['foot', 'rFoot', 'pFoot']];
 
@@ -362,8 +363,9 @@ const PAIRS = [['thigh', 'rThigh', 'pThigh'], ['shin', 'rShin', 'pShin'], ['foot
 // turns at the hip by its share of the shortfall of the pair furthest
 // inside (1 in the air in both frames; else the larger of its `free` share
 // and its drawn sole's height from CONTACT_M to twice that), within what
-// is left of its room: thighs and shins away from the other hip, feet away
-// from the other foot's nearest point (within `along`).
+// is left of its room: thighs and shins away from the other hip, each foot's
+// middle away from the nearest point of the other foot's centre line
+// (within `along`).
 function keepApart(skel, legs, o) {
   const J = skel.joints;
   for (let round = 0; round < APART_ROUNDS; round++) {
@@ -388,14 +390,22 @@ function keepApart(skel, legs, o) {
       }
     }
     if (shortfall <= 0) return;
-    // Feet part along the line between their nearest points (they pass
-    // front to back as well as side to side); thighs and shins move out.
-    const betweenFeet = feet && Math.hypot(nearest[0][0] - nearest[1][0], nearest[0][1] - nearest[1][1],
-      nearest[0][2] - nearest[1][2]) >= 1e-3;
+    // Each foot's middle parts from the other's centre line (feet pass
+    // front to back as well as side to side; the nearest points would jump
+    // from end to end as they pass); thighs and shins move out. The feet are the last
+    // pair, so lineFrom/lineTo still hold their centre lines.
+    let betweenFeet = feet;
+    if (feet) {
+      for (let i = 0; i < 2; i++)
+        for (let k = 0; k < 3; k++) middle[i][k] = 0.5 * (lineFrom[i][k] + lineTo[i][k]);
+      for (let i = 0; i < 2; i++)
+        if (closestPoints(middle[i], middle[i], lineFrom[1 - i], lineTo[1 - i], scratch, onOther[i]) < 1e-3)
+          betweenFeet = false;
+    }
     for (let i = 0; i < 2; i++) {
       if (share[i] <= 0) continue;
       const hp = bothLegs[i].pThigh;
-      const from = betweenFeet ? nearest[1 - i] : bothLegs[1 - i].pThigh, to = betweenFeet ? nearest[i] : hp;
+      const from = betweenFeet ? onOther[i] : bothLegs[1 - i].pThigh, to = betweenFeet ? middle[i] : hp;
       const lx = nearest[i][0] - hp[0], ly = nearest[i][1] - hp[1], lz = nearest[i][2] - hp[2];
       let cx = to[0] - from[0], cy = to[1] - from[1], cz = to[2] - from[2];
       const width = Math.hypot(cx, cy, cz);
