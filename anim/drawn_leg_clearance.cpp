@@ -133,9 +133,8 @@ Drawn feet_way_turns(const LegBlend& legs, Draw draw, std::pair<float, glm::vec3
 // `beat` anywhere: a candidate turn that does not beat the best so far
 // costs one drawing, not the frame's five and a search's twelve (every
 // candidate drawn in full, at 1/24 steps, took the animation bench from
-// 1.6 to 3.0 s a game). `clear_a`: legs.clearance(pa), the same for every
-// turn a caller tries.
-Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, float clear_a, const PlayerPose& pb, float beat = -INFINITY,
+// 1.6 to 3.0 s a game).
+Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& pb, float beat = -INFINITY,
                   float first = 0.5f) {
   // Each point drawn, with the way the clients' step parted the feet there
   // (LegBlend::apply's feet_way; kept for the first kMaxParted points).
@@ -183,18 +182,16 @@ Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, float clear_a, con
   // dip beside a deeper one (game 1 seq 2194 right 2: 1.0 cm found at t =
   // 0.465, the feet 3 cm through each other at 0.645), or never looked at
   // a dip two steps away (game 2 seq 4811 right 11: 1 cm found at 0.771,
-  // -1.1 cm at 0.283). The first stretch is drawn finely too when frame a
-  // itself holds the legs within kRefineBelowM: they may close further
-  // just after it, where no step looks.
+  // -1.1 cm at 0.283).
   d.clearance = INFINITY;
   for (int n = 1; n <= kDrawnSteps; ++n)
     if (clear[n] < d.clearance) {
       d.clearance = clear[n];
       d.at = step_t(n);
     }
-  if (std::min(d.clearance, clear_a) < kRefineBelowM) {
+  if (d.clearance < kRefineBelowM) {
     for (int n = 1; n <= kDrawnSteps; ++n) {
-      if (std::min(n == 1 ? clear_a : clear[n - 1], clear[n]) >= kRefineBelowM) continue;
+      if (std::min(clear[n - 1], clear[n]) >= kRefineBelowM) continue;
       for (int q = 1; q < kSplits; ++q) {
         const float t = step_t(n - 1) + static_cast<float>(q) / (kSplits * kDrawnSteps);
         const float c = legs.clearance(drawn_at(t));
@@ -246,7 +243,7 @@ Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, float clear_a, con
 
 float drawn_leg_clearance(const LegBlend& legs, const PlayerPose& last, const DrawnRoot& now,
                           std::span<const float> a) {
-  return drawn_frame(legs, last, legs.clearance(last), pose_of(now, a)).clearance;
+  return drawn_frame(legs, last, pose_of(now, a)).clearance;
 }
 
 PlayerPose as_streamed(const proto::Quantizer& grid, const PlayerPose& pose) {
@@ -281,7 +278,6 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
     if (2 * n != kDrawnSteps) plain = std::min(plain, legs.clearance(blend_of(last, pb, step_t(n))));
   if (plain >= kGateM) return false;
   const PlayerPose pa = grid != nullptr ? as_streamed(*grid, last) : last;
-  const float clear_a = legs.clearance(pa);  // the same for every turn tried
   // A turn that clears is drawn once more as the stream will carry the
   // frame: rounded by the animator (grid_rounding.hpp, which may move a hip
   // 0.99 deg to keep an ankle in place) and then by the encoder. It counts
@@ -300,10 +296,10 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
     LocalToModelJob fk{&skel, std::span<const float>(q.angles.data(), dof::kCount), glm::vec3(0, q.z, 0), models};
     fk.joint_mask = kLegJoints;
     if (fk.Run()) round_legs_to_grid(*grid, skel, models.data(), q);
-    d.clearance = std::min(d.clearance, drawn_frame(legs, pa, clear_a, as_streamed(*grid, q)).clearance);
+    d.clearance = std::min(d.clearance, drawn_frame(legs, pa, as_streamed(*grid, q)).clearance);
     return d;
   };
-  const Drawn before = turned ? as_sent(drawn_frame(legs, pa, clear_a, pb), pb) : drawn_frame(legs, pa, clear_a, pb);
+  const Drawn before = turned ? as_sent(drawn_frame(legs, pa, pb), pb) : drawn_frame(legs, pa, pb);
   if (before.clearance >= kDrawnApartM) return false;
   float best = before.clearance, worst_at = before.at;
   std::array<float, dof::kCount> best_a{}, cand{};
@@ -328,7 +324,7 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
     if (legs.clearance(pb) < frame_floor) return Tried::Refused;
     // A turn no clearer than the best so far is passed over (a larger one
     // may still be).
-    const Drawn d = as_sent(drawn_frame(legs, pa, clear_a, pb, best, worst_at), pb);
+    const Drawn d = as_sent(drawn_frame(legs, pa, pb, best, worst_at), pb);
     if (d.beaten) return Tried::Passed;
     // No ankle pops where there were none (nor worse ones), and no foot
     // on the grass carried over it further.

@@ -392,8 +392,8 @@ function keepApart(skel, legs, o) {
     if (shortfall <= 0) return;
     // Each foot's middle parts from the other's centre line (feet pass
     // front to back as well as side to side; the nearest points would jump
-    // from end to end as they pass); thighs and shins move out. The feet are the last
-    // pair, so lineFrom/lineTo still hold their centre lines.
+    // from end to end as they pass); thighs and shins move out. The feet
+    // are the last pair, so lineFrom/lineTo still hold their centre lines.
     let betweenFeet = feet;
     if (feet) {
       for (let i = 0; i < 2; i++)
