@@ -35,6 +35,7 @@ Animator::Animator(const SkeletonDef& skeleton, const GameParams& params, AnimCo
   // cycle (which looks one further back).
   ring_.resize(static_cast<std::size_t>(config_.lookahead_cycles + config_.heading_half_window + 4));
   raw_memo_.resize(ring_.size() * kMaxPlayers);
+  heading_unit_.resize(ring_.size() * kMaxPlayers);
 }
 
 Animator::~Animator() = default;
@@ -96,10 +97,9 @@ float Animator::smoothed_heading(std::uint64_t pos, int slot) const {
     const PlayerState& p = state_at(j).players[i];
     if (p.active() != c.active()) continue;
     const double wt = w + 1 - std::abs(k);
-    double sn = 0, cs = 1;
-    pm::sincos(p.body * kDeg, sn, cs);  // one reduction, the same bits as sin and cos
-    sx += wt * cs;
-    sy += wt * sn;
+    const HeadingUnit& u = heading_unit_[(j % ring_.size()) * kMaxPlayers + i];
+    sx += wt * u.c;
+    sy += wt * u.s;
   }
   // Opposite headings cancel: fall back to the cycle's own heading.
   if (pm::hypot(sx, sy) < 0.25) return static_cast<float>(c.body);
@@ -107,7 +107,12 @@ float Animator::smoothed_heading(std::uint64_t pos, int slot) const {
 }
 
 void Animator::push(const WorldState& state, std::vector<PoseFrame>& out, std::vector<AnimEvent>* events) {
-  ring_[pushed_ % ring_.size()] = state;
+  const std::size_t at = pushed_ % ring_.size();
+  ring_[at] = state;
+  for (std::size_t i = 0; i < kMaxPlayers; ++i) {
+    HeadingUnit& u = heading_unit_[at * kMaxPlayers + i];
+    pm::sincos(state.players[i].body * kDeg, u.s, u.c);  // one reduction, the same bits as sin and cos
+  }
   ++pushed_;
   while (emitted_ + static_cast<std::uint64_t>(config_.lookahead_cycles) < pushed_)
     emit_cycle(emitted_++, out, events);

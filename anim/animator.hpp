@@ -107,6 +107,13 @@ class Animator {
   proto::Quantizer grid_;         // the stream's: frames leave on it (grid_rounding.hpp)
   LegBlend drawn_legs_;           // the clients' step between frames (drawn_leg_clearance.hpp)
   std::vector<WorldState> ring_;  // the last ring_.size() states, by stream position
+  // Per ring slot and player, the cosine and sine of the body's heading,
+  // taken once as the state arrives: smoothed_heading reads each state's
+  // over a window, several times a cycle (1 % of the animation's time).
+  struct HeadingUnit {
+    double c = 1, s = 0;
+  };
+  std::vector<HeadingUnit> heading_unit_;
   // raw_action's last answer per ring slot and player, and what it was made from.
   struct RawDecision {
     std::uint64_t pos = ~std::uint64_t{0};

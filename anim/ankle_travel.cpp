@@ -12,6 +12,7 @@
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/local_to_model_job.hpp"
+#include "anim/sincos_deg.hpp"
 
 namespace mc::anim {
 

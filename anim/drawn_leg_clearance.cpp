@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "anim/body_frame.hpp"
 #include "anim/grid_rounding.hpp"
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
@@ -75,7 +76,7 @@ PlayerPose blend_of(const PlayerPose& pa, const PlayerPose& pb, float t) {
   o.x = pa.x + (pb.x - pa.x) * t;
   o.y = pa.y + (pb.y - pa.y) * t;
   o.z = pa.z + (pb.z - pa.z) * t;
-  o.heading = pa.heading + std::remainder(pb.heading - pa.heading, 360.0f) * t;
+  o.heading = pa.heading + remainder_360(pb.heading - pa.heading) * t;
   for (std::size_t k = 0; k < o.angles.size(); ++k) o.angles[k] = pa.angles[k] + (pb.angles[k] - pa.angles[k]) * t;
   return o;
 }
@@ -271,11 +272,21 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
     turn = std::max(turn, std::fabs(a[static_cast<std::size_t>(d)] - last.angles[static_cast<std::size_t>(d)]));
   if (turn < kStillDeg) return false;
   PlayerPose pb = pose_of(now, a);
-  const float mid = legs.clearance(blend_of(last, pb, 0.5f));
+  // The plain blend's clearance reads its angles alone (LegBlend::clearance
+  // poses the legs in the root's space): the root and the heading are not
+  // blended for it (the heading's wrap was 1 % of the animation's
+  // instructions).
+  PlayerPose plain_pose = last;
+  auto plain_at = [&](float t) {
+    for (std::size_t k = 0; k < plain_pose.angles.size(); ++k)
+      plain_pose.angles[k] = last.angles[k] + (pb.angles[k] - last.angles[k]) * t;
+    return legs.clearance(plain_pose);
+  };
+  const float mid = plain_at(0.5f);
   if (mid >= kMidGateM) return false;
   float plain = mid;  // the middle step is the half-way point, drawn already
   for (int n = 1; n < kDrawnSteps; ++n)
-    if (2 * n != kDrawnSteps) plain = std::min(plain, legs.clearance(blend_of(last, pb, step_t(n))));
+    if (2 * n != kDrawnSteps) plain = std::min(plain, plain_at(step_t(n)));
   if (plain >= kGateM) return false;
   const PlayerPose pa = grid != nullptr ? as_streamed(*grid, last) : last;
   // A turn that clears is drawn once more as the stream will carry the

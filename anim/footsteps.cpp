@@ -8,6 +8,7 @@
 #include "anim/human_skeleton.hpp"
 #include "anim/portable_math.hpp"
 #include "anim/segment_distance.hpp"
+#include "anim/sincos_deg.hpp"
 
 namespace mc::anim {
 namespace {
@@ -111,7 +112,7 @@ void to_target(const BodyFrame& body, float ax, float ay, float ah, float yaw, f
 // Lowest sole height of a foot whose ankle is at height `ah` with the sole pitched by `pitch`.
 float sole_height(float ah, float pitch) {
   float s = 0, c = 1;
-  pm::sincos(pitch * kDeg, s, c);
+  sincos_deg(pitch, s, c);
   const float toe = dims::kFootFront * s - dims::kAnkleHeight * c;
   const float heel = -dims::kFootBack * s - dims::kAnkleHeight * c;
   return ah + std::min(toe, heel);
@@ -176,8 +177,8 @@ void planted_ankle(float x, float y, float yaw_deg, float pitch_deg, float& ax, 
   // grass; the flat sole's centre is (x, y).
   const float e = pitch_deg > 0 ? -dims::kFootBack : dims::kFootFront;  // that edge, ahead of the ankle
   float s = 0, c = 1, ux = 1, uy = 0;
-  pm::sincos(pitch_deg * kDeg, s, c);
-  pm::sincos(yaw_deg * kDeg, uy, ux);
+  sincos_deg(pitch_deg, s, c);
+  sincos_deg(yaw_deg, uy, ux);
   const float along = (e - kSoleCentre) + (-e * c - dims::kAnkleHeight * s);
   ax = x + ux * along;
   ay = y + uy * along;

@@ -13,6 +13,7 @@
 #include "anim/human_skeleton.hpp"
 #include "anim/local_to_model_job.hpp"
 #include "anim/portable_math.hpp"
+#include "anim/sincos_deg.hpp"
 
 namespace mc::anim {
 namespace {
@@ -164,7 +165,7 @@ void round_legs_to_grid(const proto::Quantizer& grid, const SkeletonDef& skeleto
   else if (dh_deg < -180.0f) dh_deg += 360.0f;
   const float dh = dh_deg * kDeg;
   float s = 0, c = 1;
-  pm::sincos(heading * kDeg, s, c);
+  sincos_deg(heading, s, c);
   const float dx = pose.x - x, dy = pose.y - y;
   const glm::vec3 root_step(dx * c + dy * s, pose.z - z, -dx * s + dy * c);
   float* a = pose.angles.data();

@@ -10,6 +10,7 @@
 #include "anim/human_skeleton.hpp"
 #include "anim/local_to_model_job.hpp"
 #include "anim/portable_math.hpp"
+#include "anim/sincos_deg.hpp"
 
 namespace mc::anim {
 
@@ -106,8 +107,8 @@ float level_foot(const SkeletonDef& skeleton, std::span<glm::mat4> models, std::
 }
 
 float min_ankle_height(float pitch_deg) {
-  constexpr float kDegToRad = 3.14159265f / 180.0f;
-  const float s = pm::sin(pitch_deg * kDegToRad), c = pm::cos(pitch_deg * kDegToRad);
+  float s = 0, c = 1;
+  sincos_deg(pitch_deg, s, c);
   // Sole corners in the foot's frame: (forward, down) = (kFootFront, -h), (-kFootBack, -h).
   const float toe = dims::kFootFront * s - dims::kAnkleHeight * c;
   const float heel = -dims::kFootBack * s - dims::kAnkleHeight * c;

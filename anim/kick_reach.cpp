@@ -8,6 +8,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "anim/body_frame.hpp"
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/joint_limits.hpp"
@@ -128,7 +129,7 @@ float reach_ball_with_hip(const SkeletonDef& skel, std::span<const float> last, 
     if (!joint_angles(td.dofs, turned, deg)) break;
     float next[3];
     for (std::size_t d = 0; d < 3; ++d) {
-      next[d] = a[hip + d] + std::remainder(deg[d] - a[hip + d], 360.0f);
+      next[d] = a[hip + d] + remainder_360(deg[d] - a[hip + d]);
       next[d] = std::clamp(next[d], td.limits[d][0], std::max(td.limits[d][0], td.limits[d][1]));
     }
     // Within the hip's turn from the last frame: as much of the way as that allows.

@@ -173,7 +173,15 @@ class LegBlend {
   // both frames, t leaving it, 1 - t landing, 0 on it); `room`: how far each leg may
   // still turn (rad), and `along` how far in a turn that may carry its
   // ankle along its travel; both used up as it turns.
-  void keep_apart(const float free[2], float room[2], float along[2], PlayerPose& o, glm::vec3* feet_way) const;
+  // `fixed`: the transforms the step never turns, posed once by apply():
+  // the root's model transform and each leg's shin's and foot's local ones.
+  struct Fixed {
+    glm::mat4 pelvis{1.0f};
+    glm::mat4 shin[2]{glm::mat4(1.0f), glm::mat4(1.0f)};
+    glm::mat4 foot[2]{glm::mat4(1.0f), glm::mat4(1.0f)};
+  };
+  void keep_apart(const float free[2], float room[2], float along[2], const Fixed& fixed, PlayerPose& o,
+                  glm::vec3* feet_way) const;
 
   const SkeletonDef& skeleton_;
   std::array<Leg, 2> leg_{};

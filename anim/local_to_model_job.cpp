@@ -10,6 +10,7 @@
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/portable_math.hpp"
+#include "anim/sincos_deg.hpp"
 
 namespace mc::anim {
 namespace {
@@ -23,41 +24,6 @@ constexpr float kDegToRad = 0.017453292519943295f;
 // arithmetic lane by lane): a column of a joint's rotation or transform.
 typedef float Column __attribute__((vector_size(16)));
 static_assert(sizeof(Column) == sizeof(glm::vec4));
-
-}  // namespace
-
-// sin and cos of one joint angle (degrees), remembered. One frame of one
-// player poses the same angles many times over (the legs' solver, the
-// hands' clearance, the grass check, the speed limit all run forward
-// kinematics on them), and pm::sincos is most of a joint's rotation. A
-// small direct-mapped table per thread, keyed by the angle's bits: a hit
-// gives exactly what the computation would, so the frames do not change.
-// (Zeroed entries hold +0 degrees, whose sine and cosine are 0 and 1.)
-namespace {
-
-inline void remembered_sincos(float deg, float& s, float& c) {
-  struct Entry {
-    std::uint32_t bits = 0;
-    float s = 0, c = 1;
-  };
-  constexpr unsigned kBits = 10;
-  thread_local std::array<Entry, 1u << kBits> table{};
-  std::uint32_t bits = 0;
-  std::memcpy(&bits, &deg, sizeof bits);
-  Entry& e = table[(bits * 2654435761u) >> (32 - kBits)];
-  if (e.bits != bits) {
-    e.bits = bits;
-    pm::sincos(deg * kDegToRad, e.s, e.c);
-  }
-  s = e.s;
-  c = e.c;
-}
-
-}  // namespace
-
-void sincos_deg(float deg, float& s, float& c) { remembered_sincos(deg, s, c); }
-
-namespace {
 
 // r * R_axis(angle) for each dof in turn, column by column: an elementary
 // rotation mixes two columns of r and keeps the third. This is the hottest
@@ -89,7 +55,7 @@ glm::mat3 rotation_of(const std::string& dofs, SinCos sc) {
 }  // namespace
 
 glm::mat3 joint_rotation(const std::string& dofs, const float* deg) {
-  return rotation_of(dofs, [deg](std::size_t i, float& s, float& c) { remembered_sincos(deg[i], s, c); });
+  return rotation_of(dofs, [deg](std::size_t i, float& s, float& c) { sincos_deg(deg[i], s, c); });
 }
 
 glm::mat3 joint_rotation(const std::string& dofs, const float* sin, const float* cos) {

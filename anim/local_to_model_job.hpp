@@ -24,11 +24,6 @@ glm::mat3 joint_rotation(const std::string& dofs, const float* deg);
 // The same rotation from each angle's sine and cosine.
 glm::mat3 joint_rotation(const std::string& dofs, const float* sin, const float* cos);
 
-// sin and cos of an angle (deg) as joint_rotation takes them: remembered
-// per thread for the angles last posed, so an angle posed again costs a
-// lookup.
-void sincos_deg(float deg, float& s, float& c);
-
 // Its inverse for a joint of three different axes: the angles (deg) whose
 // joint_rotation is `r` (the Tait-Bryan decomposition, the middle angle
 // within +-90). False for any other `dofs`.

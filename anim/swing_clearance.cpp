@@ -9,6 +9,7 @@
 #include "anim/body_frame.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/portable_math.hpp"
+#include "anim/sincos_deg.hpp"
 
 namespace mc::anim {
 namespace {
@@ -44,7 +45,7 @@ float swing_lift(float ankle_height, float pitch_deg, float clear_m) {
   // (Z stays level): the lowest corner is the centre's height less each
   // half side times its axis's lean.
   float s, c;
-  pm::sincos(pitch_deg * kDeg, s, c);
+  sincos_deg(pitch_deg, s, c);
   const FootBox& box = foot_box();
   const float sole = ankle_height + box.centre.x * s + box.centre.y * c - box.half.x * std::fabs(s) - box.half.y * std::fabs(c);
   return std::max(0.0f, clear_m - sole);
