@@ -4,11 +4,11 @@
 #include <cmath>
 
 #include "anim/portable_math.hpp"
+#include "anim/sincos_deg.hpp"
 
 namespace mc::anim {
 namespace {
 constexpr float kRadToDeg = 57.29577951308232f;
-constexpr float kDegToRad = 0.017453292519943295f;
 }  // namespace
 
 bool TwoBoneIKJob::Validate() const {
@@ -42,9 +42,8 @@ bool TwoBoneIKJob::Run() const {
   const float p0x = l2 * sk;
   const float p0y = -l1 - l2 * ck;
   // The twist (applied first, about Y) turns the hinge plane.
-  const float c = twist_deg * kDegToRad;
   float sc = 0, cc = 1;
-  pm::sincos(c, sc, cc);
+  sincos_deg(twist_deg, sc, cc);  // remembered: the same twist comes back as a leg is solved again
   const float p1x = p0x * cc, p1y = p0y, p1z = -p0x * sc;
   // Rx(b) must bring the z component to tz: p1z cos b + p1y sin b = tz.
   // Written as R cos(b + psi) with R = |(p1y, p1z)|, psi = atan2(-p1y, p1z);
