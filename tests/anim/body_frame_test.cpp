@@ -6,20 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <random>
 
 namespace mc::anim {
 namespace {
-
-std::uint32_t bits_of(float v) {
-  std::uint32_t b = 0;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
 
 void expect_library_bits(float a) {
   const float want = std::remainder(a, 360.0f), got = remainder_360(a);
@@ -27,7 +21,7 @@ void expect_library_bits(float a) {
     EXPECT_TRUE(std::isnan(got)) << a;
     return;
   }
-  EXPECT_EQ(bits_of(got), bits_of(want)) << a;
+  EXPECT_EQ(std::bit_cast<std::uint32_t>(got), std::bit_cast<std::uint32_t>(want)) << a;
 }
 
 TEST(Remainder360, TheLibrarysBitsOverEveryTurnTheAnimationMakes) {

@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -19,12 +19,6 @@
 
 namespace mc::anim {
 namespace {
-
-std::uint32_t bits_of(float v) {
-  std::uint32_t b = 0;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
 
 // sincos_deg against pm::sincos(deg * kDeg), bit for bit (NaN as NaN).
 void expect_exact(float deg) {
@@ -35,14 +29,14 @@ void expect_exact(float deg) {
     EXPECT_TRUE(std::isnan(s) && std::isnan(c)) << deg;
     return;
   }
-  EXPECT_EQ(bits_of(s), bits_of(ws)) << deg;
-  EXPECT_EQ(bits_of(c), bits_of(wc)) << deg;
+  EXPECT_EQ(std::bit_cast<std::uint32_t>(s), std::bit_cast<std::uint32_t>(ws)) << deg;
+  EXPECT_EQ(std::bit_cast<std::uint32_t>(c), std::bit_cast<std::uint32_t>(wc)) << deg;
 }
 
 TEST(SincosDeg, ItsRadianIsTheBodyFramesDegree) {
   // The table turns degrees into radians with its own constant; the callers
   // it replaced multiplied by kDeg. The same float, or the frames move.
-  EXPECT_EQ(bits_of(kDeg), bits_of(0.017453292519943295f));
+  EXPECT_EQ(std::bit_cast<std::uint32_t>(kDeg), std::bit_cast<std::uint32_t>(0.017453292519943295f));
 }
 
 TEST(SincosDeg, HitsMissesAndEvictionsGiveThePortableBits) {
