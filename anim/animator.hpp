@@ -109,7 +109,8 @@ class Animator {
   std::vector<WorldState> ring_;  // the last ring_.size() states, by stream position
   // Per ring slot and player, the cosine and sine of the body's heading,
   // taken once as the state arrives: smoothed_heading reads each state's
-  // over a window, several times a cycle (1 % of the animation's time).
+  // over a window, several times a cycle (0.8 % of the animation's
+  // instructions).
   struct HeadingUnit {
     double c = 1, s = 0;
   };

@@ -274,8 +274,8 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
   PlayerPose pb = pose_of(now, a);
   // The plain blend's clearance reads its angles alone (LegBlend::clearance
   // poses the legs in the root's space): the root and the heading are not
-  // blended for it (the heading's wrap was 1 % of the animation's
-  // instructions).
+  // blended for it (the heading's wrap is a library call, and the gate
+  // blends 368,000 times on game 1: 0.4 % of the animation's instructions).
   PlayerPose plain_pose = last;
   auto plain_at = [&](float t) {
     for (std::size_t k = 0; k < plain_pose.angles.size(); ++k)

@@ -338,9 +338,9 @@ constexpr Bounds kAt60Hz{0.20, 0.5, 0.5, 0.5, 0.02, 0.03, 0, 60, 45, 45, 45, 0, 
 // 6). With the clients' step parting the feet from each other's centre
 // line (proto/SPEC.md 4.7 step 2) and the drawn-leg check drawing finely
 // where that way turns 15 deg (drawn_leg_clearance.cpp), all 80
-// measurements hold every target; these
-// four are measured too, and 0.125, where the check with 30 deg turns of
-// that way let game 2 seq 332 through (feet 1.2 cm inside each other).
+// measurements hold every target; these four are measured too, and 0.125,
+// where the check with 30 deg turns of that way let game 2 seq 332 through
+// (feet 1.2 cm inside each other).
 
 void expect_within(const CloseUpReport& r, const Bounds& b, const std::string& what) {
   SCOPED_TRACE(what);
