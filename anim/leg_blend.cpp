@@ -11,6 +11,7 @@
 
 #include "anim/body_frame.hpp"
 #include "anim/local_to_model_job.hpp"
+#include "anim/rough_sincos.hpp"
 #include "anim/segment_distance.hpp"
 
 namespace mc::anim {
@@ -352,6 +353,67 @@ float LegBlend::clearance(const PlayerPose& o) const {
     foot[i] = shin[i] * local(leg_[i].foot);
   }
   return nearest(thigh, shin, foot).clearance;
+}
+
+float LegBlend::rough_clearance(const float* a, const float* b, float t) const {
+  if (!ready()) return INFINITY;
+  const auto& joints = skeleton_.joints;
+  // Each joint's dofs' sines and cosines, and how it carries a point into
+  // its parent's space: its elementary rotations applied to the point,
+  // last dof first (joint_rotation is R_dofs[0] R_dofs[1] ...), then its
+  // offset. No matrices: the gate carries only the six ends of the three
+  // segments' centre lines per leg.
+  struct Carry {
+    const char* axes = "";
+    int n = 0;
+    float s[3] = {0, 0, 0}, c[3] = {1, 1, 1};
+    glm::vec3 offset{0.0f};
+    glm::vec3 operator()(glm::vec3 p) const {
+      for (int k = n - 1; k >= 0; --k) {
+        const float sk = s[k], ck = c[k];
+        if (axes[k] == 'x') p = glm::vec3(p.x, ck * p.y - sk * p.z, sk * p.y + ck * p.z);
+        else if (axes[k] == 'y') p = glm::vec3(ck * p.x + sk * p.z, p.y, ck * p.z - sk * p.x);
+        else p = glm::vec3(ck * p.x - sk * p.y, sk * p.x + ck * p.y, p.z);
+      }
+      return p + offset;
+    }
+  };
+  bool known = true;
+  auto carry = [&](const Joint& j) {
+    const JointDef& d = joints[static_cast<std::size_t>(j.index)];
+    Carry m;
+    m.axes = d.dofs.c_str();
+    m.n = std::min(j.dofs, 3);
+    known = known && j.dofs <= 3;
+    for (int k = 0; k < m.n; ++k) {
+      const int i = j.first_angle + k;
+      rough_sincos_deg(a[i] + (b[i] - a[i]) * t, m.s[k], m.c[k]);
+      known = known && !std::isnan(m.s[k]);  // a NaN distance would pass unseen through std::min below
+    }
+    m.offset = glm::vec3(d.offset_ls[0], d.offset_ls[1], d.offset_ls[2]);
+    return m;
+  };
+  glm::vec3 ends[3][2][2];  // [thigh, shin, foot][leg][from, to], in the root's space
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Leg& leg = leg_[i];
+    const Carry thigh = carry(leg.thigh), shin = carry(leg.shin), foot = carry(leg.foot);
+    ends[0][i][0] = thigh(leg.thigh.line_from);
+    ends[0][i][1] = thigh(leg.thigh.line_to);
+    ends[1][i][0] = thigh(shin(leg.shin.line_from));
+    ends[1][i][1] = thigh(shin(leg.shin.line_to));
+    ends[2][i][0] = thigh(shin(foot(leg.foot.line_from)));
+    ends[2][i][1] = thigh(shin(foot(leg.foot.line_to)));
+  }
+  float clear = INFINITY;
+  const Joint Leg::*members[3] = {&Leg::thigh, &Leg::shin, &Leg::foot};
+  for (int s = 0; s < 3; ++s) {
+    const Joint& j0 = leg_[0].*members[s];
+    const Joint& j1 = leg_[1].*members[s];
+    if (!j0.box || !j1.box) continue;
+    const float d = closest_points(ends[s][0][0], ends[s][0][1], ends[s][1][0], ends[s][1][1]).distance;
+    clear = std::min(clear, d - std::max(j0.half_width, j1.half_width));
+  }
+  return known && std::isfinite(clear) ? clear : NAN;
 }
 
 void LegBlend::keep_apart(const float free[2], float room[2], float along[2], const Fixed& fixed, PlayerPose& o,

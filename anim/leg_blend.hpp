@@ -98,6 +98,19 @@ class LegBlend {
   // < 0 too close). INFINITY without legs.
   float clearance(const PlayerPose& o) const;
 
+  // clearance() of the pose whose angles are those of `a` and `b` blended
+  // at `t` (a + (b - a) t, as the clients blend them), roughly: with float
+  // sines and cosines (rough_sincos.hpp) instead of the remembered double
+  // ones, whose table a blend's new angles only crowd, and the segments'
+  // ends carried by elementary rotations instead of matrices. Within a
+  // tenth of kRoughClearanceM of clearance() of that pose over the joints'
+  // whole range (anim_leg_blend_test). NaN where it cannot tell (a joint of
+  // more than three dofs, an angle out of range or NaN). For a gate
+  // (keep_legs_apart_drawn): a rough figure more than kRoughClearanceM from
+  // a bound is on the same side of it as the exact one.
+  float rough_clearance(const float* a, const float* b, float t) const;
+  static constexpr float kRoughClearanceM = 0.001f;
+
   // Where pose `p` puts leg `i`'s ankle (0 and 1 in the order found; the
   // human skeleton's right, then left): field space written as (x, height,
   // y), as anim-quality measures an ankle's travel. With `sole`, also the

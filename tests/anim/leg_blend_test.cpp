@@ -383,6 +383,58 @@ TEST(LegBlend, ASkeletonWithoutLegsIsNotTouched) {
   EXPECT_EQ(o.angles[0], 12);
 }
 
+// The drawn-leg check's gate takes the plain blend's clearance roughly
+// (keep_legs_apart_drawn): it must be within a tenth of its margin of the
+// exact one, legs far apart, crossing and through each other alike, over
+// every angle the joints allow (taken at random within their limits).
+TEST(LegBlend, ItsRoughClearanceIsWithinItsMarginOfTheExactOne) {
+  const SkeletonDef& s = human_skeleton();
+  const LegBlend legs(s);
+  ASSERT_TRUE(legs.ready());
+  std::mt19937 rng(39);
+  auto random_pose = [&] {
+    PlayerPose p;
+    std::size_t d = 0;
+    for (const JointDef& j : s.joints)
+      for (std::size_t k = 0; k < j.dofs.size(); ++k, ++d) {
+        const auto& lim = j.limits[k];
+        p.angles[d] = std::uniform_real_distribution<float>(std::min(lim[0], lim[1]), std::max(lim[0], lim[1]))(rng);
+      }
+    return p;
+  };
+  double worst = 0;
+  int through = 0, apart = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const PlayerPose a = random_pose(), b = random_pose();
+    const float t = i % 7 == 0 ? 0.5f : std::uniform_real_distribution<float>(0.0f, 1.0f)(rng);
+    PlayerPose o = a;
+    for (std::size_t k = 0; k < o.angles.size(); ++k) o.angles[k] = a.angles[k] + (b.angles[k] - a.angles[k]) * t;
+    const float exact = legs.clearance(o);
+    const float rough = legs.rough_clearance(a.angles.data(), b.angles.data(), t);
+    ASSERT_TRUE(std::isfinite(exact) && std::isfinite(rough)) << i;
+    worst = std::max(worst, static_cast<double>(std::fabs(rough - exact)));
+    through += exact < 0.0f;
+    apart += exact > 0.1f;
+  }
+  EXPECT_LT(worst, 0.1 * LegBlend::kRoughClearanceM);
+  // Both kinds were there to be measured.
+  EXPECT_GT(through, 500);
+  EXPECT_GT(apart, 1000);
+}
+
+TEST(LegBlend, ItsRoughClearanceIsNaNWhereItCannotTell) {
+  const LegBlend legs(human_skeleton());
+  PlayerPose a, b;
+  a.angles[dof::kRKnee] = 2e6f;  // past rough_sincos_deg's range
+  EXPECT_TRUE(std::isnan(legs.rough_clearance(a.angles.data(), b.angles.data(), 0.5f)));
+  a.angles[dof::kRKnee] = NAN;
+  EXPECT_TRUE(std::isnan(legs.rough_clearance(a.angles.data(), b.angles.data(), 0.0f)));
+  // Without legs there is nothing to be near: as clearance(), no bound.
+  SkeletonDef none;
+  none.joints.push_back(JointDef{"root", -1, {0, 0, 0}, "y", {{-180, 180}}, {}});
+  EXPECT_EQ(LegBlend(none).rough_clearance(a.angles.data(), b.angles.data(), 0.5f), INFINITY);
+}
+
 // The clients' vectors (proto/SPEC.md 4.7, step 2): pairs of frames, a
 // playhead and the blended pose, with the angles this step makes of it.
 // tests/web/feet.test.mjs checks the page's implementation against the same
