@@ -1,13 +1,14 @@
 // The close-up camera's line of sight (web/src/model/sightline.js): it
-// keeps its bearing while no one stands between it and its subject, and
-// cuts to the clear bearing nearest to it when someone does.
+// keeps its bearing while no one stands between it and its subject, nor
+// just beside it in its picture, and cuts to the clear bearing nearest to
+// it when someone does.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 const WEB = process.env.MATCHCAST_WEB_DIR ?? path.resolve(import.meta.dirname, '../../web');
-const { CLOSEUP_BEARINGS_DEG, CLOSEUP_PATIENCE_S, CloseupAim, blocks, clearBearing, closeupSpot } =
+const { CLOSEUP_BEARINGS_DEG, CLOSEUP_PATIENCE_S, CloseupAim, NEAR_CAMERA_M, blocks, clearBearing, closeupSpot } =
   await import(pathToFileURL(path.join(WEB, 'src/model/sightline.js')).href);
 
 const subject = { x: 10, y: -5 };
@@ -36,6 +37,33 @@ test('only a player between the camera and the subject blocks it', () => {
   assert.equal(blocks(cam, subject, { x: side.x + 1.0, y: side.y }), false, 'a metre to the side');
   assert.equal(blocks(subject, subject, inTheWay(0)), false, 'no line of sight at all');
   assert.equal(blocks(cam, subject, { x: NaN, y: 0 }), false, 'no position');
+});
+
+// A point `ahead` m along the camera's line of sight and `aside` m to its
+// right (as the camera looks), in field metres.
+const fromCamera = (cam, ahead, aside) => {
+  const vx = subject.x - cam.x, vy = subject.y - cam.y, len = Math.hypot(vx, vy);
+  const ux = vx / len, uy = vy / len;
+  return { x: cam.x + ux * ahead - uy * aside, y: cam.y + uy * ahead + ux * aside };
+};
+
+test('a player just beside the camera, in its picture, is in the way too', () => {
+  const cam = closeupSpot(subject, 0);
+  // 1.3 m ahead and 1 m aside, off the line of sight but in the picture:
+  // the forearm across a corner of the frame.
+  for (const aside of [1.0, -1.0]) assert.equal(blocks(cam, subject, fromCamera(cam, 1.3, aside)), true, `aside ${aside}`);
+  // Beside the camera but out of the picture, or behind it: not.
+  assert.equal(blocks(cam, subject, fromCamera(cam, 0.3, 1.5)), false, 'level with the camera');
+  assert.equal(blocks(cam, subject, fromCamera(cam, -0.5, 0.6)), false, 'behind the camera');
+  // At the picture's edge but further off than NEAR_CAMERA_M, and off the
+  // line of sight: a player in the background, as any broadcast shows.
+  const far = fromCamera(cam, (NEAR_CAMERA_M + 0.5) * Math.cos(0.4), (NEAR_CAMERA_M + 0.5) * Math.sin(0.4));
+  assert.equal(blocks(cam, subject, far), false, 'further off');
+  // The cut: to a bearing from which he is out of the picture.
+  const beside = fromCamera(cam, 1.3, 1.0);
+  const chosen = clearBearing(subject, [beside], 0);
+  assert.notEqual(chosen, 0);
+  assert.equal(blocks(closeupSpot(subject, CLOSEUP_BEARINGS_DEG[chosen]), subject, beside), false);
 });
 
 test('a clear bearing is kept; a blocked one gives way to the nearest clear one', () => {

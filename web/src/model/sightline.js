@@ -1,6 +1,7 @@
 // The close-up camera keeps its subject in sight. It stands beside him on
 // the main stand's side at chest height; another player between the two
-// filled the picture with his back (seen in a close-up of #10 behind #11).
+// filled the picture with his back (seen in a close-up of #10 behind #11),
+// and one just beside the camera a corner of it with his arm.
 // The camera then cuts to the nearest of a few bearings about the subject
 // from which no one stands in the way, as a broadcast cuts to another
 // camera. Pure functions of positions (field x, y in metres): no three.js.
@@ -20,13 +21,33 @@ export function closeupSpot(subject, bearingDeg) {
   return { x: subject.x + OFFSET.x * c - OFFSET.y * s, y: subject.y + OFFSET.x * s + OFFSET.y * c };
 }
 
-// Whether `other` stands between the camera and the subject.
+// A body this near the camera (m) fills part of the close-up wherever in
+// the picture it stands: a player just beside the camera put his forearm
+// down a side of the frame (seen in a close-up of #10, 2026-11-30); the
+// subject himself stands 4.75 m off.
+export const NEAR_CAMERA_M = 2.5;
+// Half the close-up's picture, across (deg): 38 deg of vertical field of
+// view on a 16:9 screen is 63 across; a little more for the body's edge.
+export const PICTURE_HALF_DEG = 33;
+
+// Whether `other` stands in the way: between the camera and the subject,
+// or within NEAR_CAMERA_M of the camera and in its picture.
 export function blocks(cam, subject, other, radius = BODY_RADIUS_M) {
   const vx = subject.x - cam.x, vy = subject.y - cam.y;
   const len2 = vx * vx + vy * vy;
   if (!(len2 > 1e-6)) return false;
-  const t = ((other.x - cam.x) * vx + (other.y - cam.y) * vy) / len2;
-  if (!(t > 0 && t < 1)) return false;  // behind the camera or beyond the subject
+  const ox = other.x - cam.x, oy = other.y - cam.y;
+  const t = (ox * vx + oy * vy) / len2;
+  if (!(t > 0)) return false;  // behind the camera (or no position)
+  const near = Math.hypot(ox, oy);
+  if (near < NEAR_CAMERA_M) {
+    // The angle off the line of sight, less the body's own half width as
+    // seen from the camera.
+    const off = Math.acos(Math.min(1, (ox * vx + oy * vy) / (near * Math.sqrt(len2))));
+    const half = Math.asin(Math.min(1, radius / near));
+    if ((off - half) * (180 / Math.PI) < PICTURE_HALF_DEG) return true;
+  }
+  if (!(t < 1)) return false;  // beyond the subject
   const px = cam.x + vx * t - other.x, py = cam.y + vy * t - other.y;
   return px * px + py * py < radius * radius;
 }
