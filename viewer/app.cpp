@@ -181,14 +181,18 @@ CameraTarget App::camera_target(const PoseFrame& f) {
       const glm::mat4& head = joints[static_cast<std::size_t>(model_->head_joint())];
       t.head = glm::vec3(head[3]);
       t.head_forward = glm::normalize(glm::vec3(head[0]));
+      for (std::size_t i = 0; i < f.players.size(); ++i)
+        if (static_cast<int>(i) != selected_ && player_visible(f.players[i]))
+          t.others.emplace_back(f.players[i].x, f.players[i].y);
     }
   }
   return t;
 }
 
-void App::draw(const PoseFrame& f, int width, int height, double dt) {
+void App::draw(const PoseFrame& f, int width, int height, double dt, double at) {
   const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
   CameraTarget target = camera_target(f);
+  target.at = at;
   if (const proto::DirectorCue* cue = director_.current(); cue && camera_.mode() == CameraMode::Director) {
     const ShotRig r = shot_rig(*cue, director_.angle(), f, meta_.hello->field, aspect);
     target.has_shot = true;
@@ -292,7 +296,7 @@ int App::run_window() {
       // Every pose drawn rests on the grass (proto/SPEC.md 4.7): a blend of
       // two frames can dip a sole a few centimetres under it.
       anim::rest_on_grass(meta_.hello->skeleton, *frame_);
-      draw(*frame_, width, height, dt);
+      draw(*frame_, width, height, dt, sample_->playhead);
       ++drawn;
       skips += sample_->skipped;
       lag_last = sample_->newest - sample_->playhead;

@@ -4,6 +4,7 @@
 // the HUD. Keys and mouse steer cameras, player choice and playback.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -46,7 +47,9 @@ class App {
   int run_window();
   int run_screenshot();
   void check_hello();
-  void draw(const PoseFrame& frame, int width, int height, double dt);
+  // `at`: the stream position drawn (NaN: none; the close-up's cut counts
+  // only while it moves).
+  void draw(const PoseFrame& frame, int width, int height, double dt, double at = NAN);
   // No picture yet: the sky and the reason in the middle.
   void draw_waiting(const std::string& status, int width, int height);
   CameraTarget camera_target(const PoseFrame& frame);

@@ -140,8 +140,11 @@ void Camera::update(double dt, const CameraTarget& target, float aspect,
       // from the main stand's side at chest height, so that his whole body
       // and his kicks fill the picture. Not hung on his heading, which
       // turns too often; held on him (his interpolated pose is smooth).
+      // Someone in the way for a moment is let pass; for longer, a cut to a
+      // bearing from which no one is (closeup_aim.hpp).
       const glm::vec3 p = target.player_root;
-      goal = {p.x - 1.2f, 1.35f, p.z + 4.6f};
+      const glm::vec2 at = closeup_aim_.update(dt, target.at, {p.x, p.z}, target.others);
+      goal = {at.x, 1.35f, at.y};
       look_goal = {p.x, 0.8f, p.z};
       fov_goal = aspect < 1 ? 55.0f : 38.0f;
       snap_ = true;

@@ -9,14 +9,17 @@
 // No OpenGL here: tests project points with the same maths as the renderer.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "proto/hello.hpp"
+#include "viewer/closeup_aim.hpp"
 
 namespace mc::viewer {
 
@@ -39,6 +42,11 @@ struct CameraTarget {
   float player_heading = 0;      // field degrees
   glm::vec3 head{0.0f};          // his head joint and its forward (+X) axis
   glm::vec3 head_forward{1.0f, 0.0f, 0.0f};
+  // The other players on the pitch (field x, y), whom the close-up keeps
+  // out of its picture (closeup_aim.hpp), and the stream position drawn
+  // (NaN: none known; while it stays the same, the game is paused).
+  std::vector<glm::vec2> others;
+  double at = NAN;
   // The director's shot (director mode): where to stand and look; `shot_cut`
   // jumps there instead of moving.
   bool has_shot = false, shot_cut = false;
@@ -79,6 +87,7 @@ class Camera {
   // Orbit: spherical coordinates about its target.
   glm::vec3 orbit_target_{0.0f};
   float orbit_yaw_ = 0, orbit_pitch_ = 0, orbit_distance_ = 0;
+  CloseupAim closeup_aim_;  // the close-up's bearing, clear of other players
 };
 
 // Field (x, y, height) -> scene.
