@@ -107,8 +107,10 @@ static_assert(kDrawnSteps % 3 == 0, "a third of the frame is a whole number of s
 // dip, so such a stretch is drawn at kTurnPoints points. `parted`: the
 // points drawn (t, way), `draw(t, way)` draws another. Returns the least
 // clearance found there (INFINITY when the way never turns that fast).
+// With `beat`, it stops at the first point no clearer than that (`beaten`).
 template <typename Draw>
-Drawn feet_way_turns(const LegBlend& legs, Draw draw, std::pair<float, glm::vec3>* parted, std::size_t n) {
+Drawn feet_way_turns(const LegBlend& legs, Draw draw, std::pair<float, glm::vec3>* parted, std::size_t n,
+                     float beat) {
   Drawn d;
   std::sort(parted, parted + n, [](const auto& p, const auto& q) { return p.first < q.first; });
   const float cos_turn = pm::cos(kWayTurnDeg * kDeg);
@@ -125,16 +127,24 @@ Drawn feet_way_turns(const LegBlend& legs, Draw draw, std::pair<float, glm::vec3
         d.clearance = c;
         d.at = t;
       }
+      if (c <= beat) {
+        d.beaten = true;
+        return d;
+      }
     }
   }
   return d;
 }
-// With `beat`, the frame is drawn first at `first`, and drawing stops
-// (`beaten`, the rest unset) as soon as the legs come no clearer than
-// `beat` anywhere: a candidate turn that does not beat the best so far
-// costs one drawing, not the frame's five and a search's twelve (every
-// candidate drawn in full, at 1/24 steps, took the animation bench from
-// 1.6 to 3.0 s a game).
+// With `beat`, the frame is drawn first at `first` (unless it is NaN), and
+// drawing stops (`beaten`, the rest unset) as soon as the legs come no
+// clearer than `beat` anywhere: a candidate turn that does not beat the
+// best so far costs one drawing, not the frame's five and a search's
+// twelve (every candidate drawn in full, at 1/24 steps, took the animation
+// bench from 1.6 to 3.0 s a game). Beaten or not is what drawing the
+// whole frame would say, as long as no point is NaN: the least clearance
+// is no more than any point's, and the golden-section search below keeps
+// the least it has seen (after a NaN it may drop it, so it stops on its own
+// points only while it has seen none).
 Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& pb, float beat = -INFINITY,
                   float first = 0.5f) {
   // Each point drawn, with the way the clients' step parted the feet there
@@ -161,7 +171,7 @@ Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& 
     d.beaten = true;
     return true;
   };
-  if (beat > -INFINITY && beaten(legs.clearance(drawn_at(first)), first)) return d;
+  if (beat > -INFINITY && !std::isnan(first) && beaten(legs.clearance(drawn_at(first)), first)) return d;
   constexpr int kThird = kDrawnSteps / 3;
   std::array<float, kDrawnSteps + 1> clear{}, low[2]{};
   std::array<glm::vec3, kDrawnSteps + 1> at[2], root{};
@@ -207,22 +217,32 @@ Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& 
     float lo = std::max(0.0f, d.at - kSplit), hi = std::min(1.0f, d.at + kSplit);
     float x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
     float f1 = legs.clearance(drawn_at(x1)), f2 = legs.clearance(drawn_at(x2));
+    // Each round keeps the lesser of its two points, so the least of all
+    // is one of the last two: a point no clearer than `beat` ends it
+    // beaten (a NaN could be dropped, so not after one).
+    bool keeps_least = !std::isnan(f1) && !std::isnan(f2);
+    auto stop = [&](float f, float t) { return keeps_least && beaten(f, t); };
+    if (stop(std::min(f1, f2), f1 < f2 ? x1 : x2)) return d;
     for (int k = 0; k < kRefineRounds; ++k) {
+      float f = 0, t = 0;
       if (f1 < f2) {
         hi = x2, x2 = x1, f2 = f1;
         x1 = hi - kGolden * (hi - lo);
-        f1 = legs.clearance(drawn_at(x1));
+        f = f1 = legs.clearance(drawn_at(t = x1));
       } else {
         lo = x1, x1 = x2, f1 = f2;
         x2 = lo + kGolden * (hi - lo);
-        f2 = legs.clearance(drawn_at(x2));
+        f = f2 = legs.clearance(drawn_at(t = x2));
       }
+      keeps_least = keeps_least && !std::isnan(f);
+      if (stop(f, t)) return d;
     }
     if (std::min(f1, f2) < d.clearance) {
       d.clearance = std::min(f1, f2);
       d.at = f1 < f2 ? x1 : x2;
     }
-    const Drawn through = feet_way_turns(legs, drawn_way, parted.data(), parted_n);
+    const Drawn through = feet_way_turns(legs, drawn_way, parted.data(), parted_n, beat);
+    if (through.beaten) return through;
     if (through.clearance < d.clearance) {
       d.clearance = through.clearance;
       d.at = through.at;
@@ -245,6 +265,11 @@ Drawn drawn_frame(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& 
 float drawn_leg_clearance(const LegBlend& legs, const PlayerPose& last, const DrawnRoot& now,
                           std::span<const float> a) {
   return drawn_frame(legs, last, pose_of(now, a)).clearance;
+}
+
+bool drawn_leg_beaten(const LegBlend& legs, const PlayerPose& last, const DrawnRoot& now, std::span<const float> a,
+                      float beat, float first) {
+  return drawn_frame(legs, last, pose_of(now, a), beat, first).beaten;
 }
 
 PlayerPose as_streamed(const proto::Quantizer& grid, const PlayerPose& pose) {
@@ -340,13 +365,16 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
   // since may have changed its rounding); every frame drawn again cost
   // 5.5 % of the animation (anim/README.md).
   std::array<glm::mat4, kHumanJointCount> models{};
-  auto as_sent = [&](Drawn d, const PlayerPose& p) {
+  // `beat`: a candidate turn, which is passed over when the frame as sent
+  // comes no clearer than the best so far: drawing it stops there (the
+  // clearance it returns is then no more than `beat`, not the least).
+  auto as_sent = [&](Drawn d, const PlayerPose& p, float beat = -INFINITY) {
     if (grid == nullptr || d.beaten || d.clearance < kDrawnApartM) return d;
     PlayerPose q = p;
     LocalToModelJob fk{&skel, std::span<const float>(q.angles.data(), dof::kCount), glm::vec3(0, q.z, 0), models};
     fk.joint_mask = kLegJoints;
     if (fk.Run()) round_legs_to_grid(*grid, skel, models.data(), q);
-    d.clearance = std::min(d.clearance, drawn_frame(legs, pa, as_streamed(*grid, q)).clearance);
+    d.clearance = std::min(d.clearance, drawn_frame(legs, pa, as_streamed(*grid, q), beat, NAN).clearance);
     return d;
   };
   const Drawn before = turned ? as_sent(drawn_frame(legs, pa, pb), pb) : drawn_frame(legs, pa, pb);
@@ -374,14 +402,16 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
     if (legs.clearance(pb) < frame_floor) return Tried::Refused;
     // A turn no clearer than the best so far is passed over (a larger one
     // may still be).
-    const Drawn d = as_sent(drawn_frame(legs, pa, pb, best, worst_at), pb);
+    Drawn d = drawn_frame(legs, pa, pb, best, worst_at);
     if (d.beaten) return Tried::Passed;
     // No ankle pops where there were none (nor worse ones), and no foot
-    // on the grass carried over it further.
+    // on the grass carried over it further (before the frame is drawn as
+    // sent: a turn refused here is refused whatever that shows).
     for (int i = 0; i < 2; ++i)
       if (d.pop[i] > std::max(1.0f, before.pop[i]) || d.slide[i] > before.slide[i] + kSlideSlackM)
         return Tried::Refused;
     // Cleared unrounded, but as sent no clearer than the best so far.
+    d = as_sent(d, pb, best);
     if (d.clearance <= best) return Tried::Passed;
     // Nor a thigh turned into its own side's hand, which the arm was held
     // out of before this check (keep_hands_off_thighs; game 1 seq 2491, a

@@ -12,6 +12,7 @@
 // blend carries it wide of the other one.
 #pragma once
 
+#include <cmath>
 #include <span>
 
 #include "anim/ankle_travel.hpp"
@@ -68,6 +69,14 @@ bool keep_legs_apart_drawn(const LegBlend& legs, const SkeletonDef& skel, const 
 // the frame from `last` to `now`, `a`, over the whole of it.
 float drawn_leg_clearance(const LegBlend& legs, const PlayerPose& last, const DrawnRoot& now,
                           std::span<const float> a);
+
+// Whether the legs come no clearer than `beat` anywhere as the clients draw
+// the frame, drawn only as far as it takes to tell (first at `first`,
+// unless it is NaN): how the check passes over a candidate turn. Without
+// `first`, the same answer as drawn_leg_clearance(...) <= beat (where no
+// point drawn is NaN).
+bool drawn_leg_beaten(const LegBlend& legs, const PlayerPose& last, const DrawnRoot& now,
+                      std::span<const float> a, float beat, float first = NAN);
 
 // `pose` as the stream carries it: its root, heading and angles on the
 // grid of `grid` (proto/SPEC.md section 3), as a client decodes it.

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <vector>
 
 #include "anim/grid_rounding.hpp"
 #include "anim/ground_contact.hpp"
@@ -70,19 +71,22 @@ struct Case {
 // The legs' least clearance as drawn at `points` points of the frame (the
 // clients' blend, proto/SPEC.md 4.7 step 1, then their step 2): what a
 // display shows, whatever its phase.
+// The legs' clearance as drawn at `t` of the frame.
+float drawn_point(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& pb, float t) {
+  PlayerPose o = pa;
+  o.x += (pb.x - pa.x) * t;
+  o.y += (pb.y - pa.y) * t;
+  o.z += (pb.z - pa.z) * t;
+  o.heading += std::remainder(pb.heading - pa.heading, 360.0f) * t;
+  for (std::size_t k = 0; k < o.angles.size(); ++k) o.angles[k] += (pb.angles[k] - pa.angles[k]) * t;
+  legs.apply(pa, pb, t, o);
+  return legs.clearance(o);
+}
+
 float densely_drawn(const LegBlend& legs, const PlayerPose& pa, const PlayerPose& pb, int points = 600) {
   float least = INFINITY;
-  for (int n = 1; n <= points; ++n) {
-    const float t = static_cast<float>(n) / static_cast<float>(points);
-    PlayerPose o = pa;
-    o.x += (pb.x - pa.x) * t;
-    o.y += (pb.y - pa.y) * t;
-    o.z += (pb.z - pa.z) * t;
-    o.heading += std::remainder(pb.heading - pa.heading, 360.0f) * t;
-    for (std::size_t k = 0; k < o.angles.size(); ++k) o.angles[k] += (pb.angles[k] - pa.angles[k]) * t;
-    legs.apply(pa, pb, t, o);
-    least = std::min(least, legs.clearance(o));
-  }
+  for (int n = 1; n <= points; ++n)
+    least = std::min(least, drawn_point(legs, pa, pb, static_cast<float>(n) / static_cast<float>(points)));
   return least;
 }
 
@@ -164,6 +168,65 @@ TEST(KeepLegsApartDrawn, FeetTheClientsStepLetsThroughInASliverOfTheFrameAreTurn
   std::copy_n(last.angles.begin(), dof::kCount, last_angles.begin());
   EXPECT_TRUE(keep_legs_apart_drawn(legs, human_skeleton(), nullptr, last, last_angles, now, none_planted, a));
   EXPECT_GE(densely_drawn(legs, last, next(), 6000), 0.0f);
+}
+
+TEST(KeepLegsApartDrawn, ACandidateTurnIsPassedOverExactlyWhenTheWholeFrameDrawnSaysSo) {
+  // A candidate turn is drawn only until a point comes no clearer than the
+  // best so far (`beat`), in the golden-section search and where the feet's
+  // way turns too: that must say what drawing the whole frame says. The
+  // frames: crossing strides, and the two game frames above (a dip beside
+  // the nearest checked point; the feet's way swinging as they pass).
+  struct Frame {
+    PlayerPose last;
+    DrawnRoot now;
+    std::array<float, dof::kCount> a;
+  };
+  std::vector<Frame> frames;
+  for (const float flex : {12.0f, 20.0f, 30.0f})
+    for (const float in : {6.0f, 16.0f}) {
+      Case c;
+      frames.push_back({pose(stride(flex, in)), c.now, stride(-flex * 0.5f, in)});
+    }
+  frames.push_back({game_pose(14.62f, 2.73f, 0.94f, -81.099f,
+                              {-3.57f,  -1.0f,   -0.95f,  7.47f,   -1.59f, 1.63f,   20.98f, 1.53f,   -0.3f,
+                               30.88f,  0.54f,   -0.3f,   6.23f,   -13.68f, 0.09f,  19.8f,  0.29f,   -0.3f,
+                               -17.53f, 13.56f,  0.09f,   19.8f,   0.29f,  -0.3f,   -26.14f, 20.29f, 40.14f,
+                               -11.45f, 13.26f,  -28.02f, 23.36f,  6.58f,  14.4f,   -45.11f, 24.15f, 0.69f}),
+                    DrawnRoot{14.74f, 2.47f, 0.93f, -72.198f},
+                    {-4.56f,  -1.99f,  -0.95f, 11.43f,  -2.58f, 0.64f,   29.89f,  2.52f,   -0.3f,
+                     44.74f,  1.53f,   -0.3f,  13.16f,  -15.66f, 0.09f,  36.63f,  0.29f,   -0.3f,
+                     -32.38f, 15.54f,  0.09f,  36.63f,  0.29f,  -0.3f,   13.46f,  25.24f,  40.14f,
+                     -66.89f, 33.06f,  -16.14f, 4.55f,  12.52f, 25.29f,  -49.07f, 33.06f,  -9.21f}});
+  frames.push_back({game_pose(-14.83f, 19.34f, 0.94f, 92.967f,
+                              {-2.58f, -1.0f,   -0.95f, 6.48f,   -0.6f,  0.64f,   -13.67f, 0.54f,  -0.3f,
+                               -20.6f, 0.54f,   -0.3f,  5.24f,   -12.69f, 0.09f,  11.88f, 0.29f,  -0.3f,
+                               -11.59f, 12.57f, 0.09f,  11.88f,  0.29f,  -0.3f,   -7.33f, 26.23f, 16.38f,
+                               -33.23f, 14.25f, -25.05f, 8.51f,  22.42f, 3.51f,   -46.1f, 33.06f, -21.09f}),
+                    DrawnRoot{-15.13265f, 19.3110f, 0.928172f, 104.685974f},
+                    {-3.9852f,  -0.8f,     -0.0535f, 8.9667f,   -1.2f,    0.0535f,  -11.7926f, 1.0f,  0.0f,
+                     -17.6889f, 0.6f,      0.0f,     7.9556f,   -13.0f,   0.0f,     12.0f,     0.0f,  0.0f,
+                     -15.9556f, 13.0f,     0.0f,     12.0f,     0.0f,     0.0f,     -14.8759f, 29.8392f, 27.1234f,
+                     -29.2078f, 16.9799f,  -28.0f,   41.2872f,  -15.0536f, 5.2141f, -92.349f,  33.0f, 19.4348f}});
+  const LegBlend legs(human_skeleton());
+  int beaten = 0, cleared = 0;
+  for (const Frame& f : frames) {
+    const float whole = drawn_leg_clearance(legs, f.last, f.now, f.a);
+    ASSERT_TRUE(std::isfinite(whole));
+    const PlayerPose next = game_pose(f.now.x, f.now.y, f.now.height, f.now.heading, f.a);
+    for (const float off : {-0.02f, -0.003f, -0.001f, -1e-5f, 0.0f, 1e-5f, 0.001f, 0.003f, 0.02f}) {
+      const float beat = whole + off;
+      const bool expect = whole <= beat;
+      EXPECT_EQ(drawn_leg_beaten(legs, f.last, f.now, f.a, beat), expect) << whole << " " << off;
+      (expect ? beaten : cleared) += 1;
+      // Drawn first at `first`, that point counts too.
+      for (const float first : {0.1f, 0.45f, 0.9f})
+        EXPECT_EQ(drawn_leg_beaten(legs, f.last, f.now, f.a, beat, first),
+                  expect || drawn_point(legs, f.last, next, first) <= beat)
+            << whole << " " << off << " " << first;
+    }
+  }
+  EXPECT_GT(beaten, 0);
+  EXPECT_GT(cleared, 0);
 }
 
 TEST(KeepLegsApartDrawn, LegsThatPassThroughEachOtherInTheBlendAreTurnedApartAtTheFrame) {
