@@ -36,4 +36,11 @@ struct TwoBoneIKJob {
   bool Run() const;
 };
 
+// Runs both jobs, each exactly as its Run() would (the same bits), stage by
+// stage in step: a job is a long chain of dependent trigonometry (acos,
+// sin and cos, atan2, one after another), and two chains side by side keep
+// the processor busy where one leaves it waiting. `ran[i]`: what job i's
+// Run() would return. For two limbs solved at once (both legs).
+void run_both(const TwoBoneIKJob& first, const TwoBoneIKJob& second, bool ran[2]);
+
 }  // namespace mc::anim

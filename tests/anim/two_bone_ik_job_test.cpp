@@ -1,7 +1,10 @@
 #include "anim/two_bone_ik_job.hpp"
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -79,6 +82,57 @@ TEST(TwoBoneIKJob, ValidatesItsInputs) {
   EXPECT_TRUE(ik.Validate());
   ik.target[1] = NAN;
   EXPECT_FALSE(ik.Run());
+}
+
+TEST(TwoBoneIKJob, TwoRunInStepGiveWhatEachGivesAlone) {
+  // run_both interleaves two jobs stage by stage (LegPoseJob's two legs):
+  // each job's answer must be its own Run()'s, to the bit, whatever the
+  // other one is: reachable, clamped, degenerate, or invalid.
+  std::mt19937 rng(40);
+  std::uniform_real_distribution<float> coord(-1.2f, 1.2f), twist(-60.0f, 60.0f), soften(0.9f, 1.0f);
+  auto random_job = [&](TwoBoneIKJob& j, int kind) {
+    j.upper_length = dims::kThigh;
+    j.lower_length = dims::kShin;
+    j.target[0] = coord(rng);
+    j.target[1] = coord(rng);
+    j.target[2] = coord(rng);
+    j.twist_deg = twist(rng);
+    j.soften = soften(rng);
+    j.hinge_sign = kind % 2 == 0 ? -1.0f : 1.0f;
+    if (kind == 3) j.target[0] = j.target[1] = j.target[2] = 0;  // degenerate
+    if (kind == 5) j.target[2] = NAN;                           // invalid: left as it was
+  };
+  auto bits = [](float v) { return std::bit_cast<std::uint32_t>(v); };
+  int compared = 0;
+  for (int n = 0; n < 4000; ++n) {
+    std::array<std::array<float, 4>, 2> alone{}, paired{};  // hip (3), knee per job
+    for (auto* out : {&alone, &paired})
+      for (auto& o : *out) o = {1.5f, -2.5f, 3.5f, -4.5f};  // what an invalid job leaves
+    bool reached_alone[2] = {false, false}, reached_paired[2] = {true, true};
+    TwoBoneIKJob a[2], b[2];
+    for (int j = 0; j < 2; ++j) {
+      random_job(a[j], (n + 3 * j) % 6);
+      b[j] = a[j];
+      a[j].start_zxy = alone[j].data();
+      a[j].hinge_z = &alone[j][3];
+      a[j].reached = &reached_alone[j];
+      b[j].start_zxy = paired[j].data();
+      b[j].hinge_z = &paired[j][3];
+      b[j].reached = &reached_paired[j];
+    }
+    const bool ran_alone[2] = {a[0].Run(), a[1].Run()};
+    bool ran_paired[2] = {!ran_alone[0], !ran_alone[1]};
+    run_both(b[0], b[1], ran_paired);
+    for (int j = 0; j < 2; ++j) {
+      EXPECT_EQ(ran_paired[j], ran_alone[j]) << n << " " << j;
+      if (ran_alone[j]) {
+        EXPECT_EQ(reached_paired[j], reached_alone[j]) << n << " " << j;
+      }
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(bits(paired[j][k]), bits(alone[j][k])) << n << " " << j << " " << k;
+      compared += ran_alone[j] ? 1 : 0;
+    }
+  }
+  EXPECT_GT(compared, 6000);
 }
 
 }  // namespace
