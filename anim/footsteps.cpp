@@ -8,6 +8,7 @@
 #include "anim/human_skeleton.hpp"
 #include "anim/portable_math.hpp"
 #include "anim/segment_distance.hpp"
+#include "anim/exp2_remembered.hpp"
 #include "anim/sincos_deg.hpp"
 
 namespace mc::anim {
@@ -243,7 +244,7 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
     root_at(in, dt, nx, ny);
     const float vx = 0.5f * (nx - s.x) / dt, vy = 0.5f * (ny - s.y) / dt;
     v_now = pm::hypot(vx, vy);
-    const float k = 1.0f - pm::exp2(-dt / 0.08f);
+    const float k = 1.0f - exp2_remembered(-dt / 0.08f);
     s.vx += (vx - s.vx) * k;
     s.vy += (vy - s.vy) * k;
   }
@@ -253,10 +254,10 @@ void step_footsteps(FootstepState& s, const FootstepInput& in, const FootstepPar
   const bool no_flight = std::min(v_path, v_now) < kFlightMinSpeed;
   // Players stop in a cycle or two: the gait slows down faster than it
   // speeds up, so that a stopped body does not keep running in the air.
-  s.speed += (v_path - s.speed) * (1.0f - pm::exp2(-dt / (v_path < s.speed ? 0.04f : 0.1f)));
+  s.speed += (v_path - s.speed) * (1.0f - exp2_remembered(-dt / (v_path < s.speed ? 0.04f : 0.1f)));
   const GaitTiming gait = human_gait(s.speed, prm.cadence_cap, in.stamina);
   s.cycle_m = 2.0f * gait.step_length;
-  s.run += (gait.run - s.run) * (1.0f - pm::exp2(-dt / (gait.run < s.run ? 0.05f : 0.12f)));
+  s.run += (gait.run - s.run) * (1.0f - exp2_remembered(-dt / (gait.run < s.run ? 0.05f : 0.12f)));
 
   // Moving or standing. Standing players drift a little; the classifier's
   // stand/turn keeps them settling unless they clearly move.

@@ -9,6 +9,7 @@
 
 #include "anim/body_frame.hpp"
 #include "anim/drawn_leg_clearance.hpp"
+#include "anim/exp2_remembered.hpp"
 #include "anim/grid_rounding.hpp"
 #include "anim/ground_contact.hpp"
 #include "anim/human_skeleton.hpp"
@@ -187,7 +188,7 @@ void animate_player(PlayerAnim& ctx, const PlayerFrameInput& in, const FootstepP
     // Critically damped decay, half-life 0.1 s (Holden's spring.h: y = 2 ln2
     // / half-life, and the exact step multiplies by exp(-y dt) =
     // 2^(-2 dt / half-life)).
-    const float y = 13.862944f, e = pm::exp2(-2.0f * in.dt / 0.1f);
+    const float y = 13.862944f, e = exp2_remembered(-2.0f * in.dt / 0.1f);
     for (int d = 0; d < dof::kRHip; ++d) {
       const auto k = static_cast<std::size_t>(d);
       float& x = ctx.blend_x[k];

@@ -3,7 +3,8 @@
 // miss), or was pushed out by another angle of the same slot; with the
 // sign of zero, NaN and angles far out. The callers that took
 // pm::sincos(x * kDeg) before (the body frame, the planted foot, the
-// grass checks) rely on that: the frames must not change.
+// grass checks) rely on that: the frames must not change. The same for
+// exp2_remembered.hpp against pm::exp2.
 #include "anim/sincos_deg.hpp"
 
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "anim/body_frame.hpp"
+#include "anim/exp2_remembered.hpp"
 
 namespace mc::anim {
 namespace {
@@ -62,6 +64,21 @@ TEST(SincosDeg, ZerosNanAndFarAngles) {
   sincos_deg(-0.0f, s, c);
   EXPECT_TRUE(std::signbit(s));  // keeps the sign of zero, as pm::sincos does
   EXPECT_EQ(c, 1.0f);
+}
+
+TEST(Exp2Remembered, IsPmExp2ToTheBitOnHitsMissesAndEvictions) {
+  // The smoothing factors 2^(-dt / tau) come from a small table
+  // (exp2_remembered.hpp): first sightings, repeats, and arguments that
+  // push each other out of a slot all give pm::exp2's own bits.
+  std::vector<float> args = {-0.625f, -1.25f, -0.5f, -0.41666666f, -1.0f, 0.0f, -0.0f, 3.5f, -149.0f, 128.0f};
+  std::mt19937 rng(40);
+  std::uniform_real_distribution<float> x(-20.0f, 20.0f);
+  for (int i = 0; i < 200; ++i) args.push_back(x(rng));  // more than the table holds: evictions
+  for (int round = 0; round < 3; ++round)
+    for (const float a : args)
+      EXPECT_EQ(std::bit_cast<std::uint32_t>(exp2_remembered(a)), std::bit_cast<std::uint32_t>(pm::exp2(a))) << a;
+  EXPECT_TRUE(std::isnan(exp2_remembered(NAN)));
+  EXPECT_EQ(exp2_remembered(-INFINITY), pm::exp2(-INFINITY));
 }
 
 }  // namespace
