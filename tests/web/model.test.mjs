@@ -11,6 +11,7 @@ const load = (p) => import(pathToFileURL(path.join(WEB, p)).href);
 const { JitterBuffer } = await load('src/net/jitter.js');
 const { blendFrames, lerpAngle } = await load('src/model/interp.js');
 const { EventDetector } = await load('src/model/events.js');
+const { Announcer } = await load('src/announcer.js');
 const { normalizeSkeleton } = await load('src/model/skeleton.js');
 
 const frame = (seq, extra = {}) => ({
@@ -88,6 +89,27 @@ test('events fire once on their edge', () => {
   const card = frame(6, { playMode: 24 });
   card.players[0].state = 1 | 0x40000;
   assert.deepEqual(ev.step(card).map((e) => e.color), ['yellow']);
+});
+
+test('a foul gives the free kick to the team the mode does not name', () => {
+  // rcssserver's infringement modes name the team that committed it:
+  // foul_charge_r is followed by free_kick_l (issue 20's foul banner).
+  const ev = new EventDetector();
+  ev.step(frame(1));
+  const cases = [[24, 'r', 'l'], [25, 'l', 'r'], [32, 'r', 'l'], [33, 'l', 'r'], [17, null, null]];
+  let seq = 2;
+  for (const [mode, side, offender] of cases) {
+    const out = ev.step(frame(seq++, { playMode: mode }));
+    ev.step(frame(seq++));  // back to play on
+    if (side === null) { assert.deepEqual(out, [], `mode ${mode}`); continue; }
+    assert.deepEqual(out.map((e) => [e.type, e.side, e.offender]), [['foul', side, offender]], `mode ${mode}`);
+  }
+  // The banner names that team.
+  const banners = [];
+  const hud = { teams: { 1: { name: 'HELIOS_A' }, [-1]: { name: 'HELIOS_B' } }, banner: (text) => banners.push(text) };
+  const announcer = new Announcer(hud, { kick() {} });
+  announcer.step([frame(100), frame(101, { playMode: 25 }), frame(102), frame(103, { playMode: 32 })], null, 20);
+  assert.deepEqual(banners, ['Foul: free kick HELIOS_A', 'Foul: free kick HELIOS_B']);
 });
 
 test('the skeleton is read from the hello and bad ones are refused', () => {

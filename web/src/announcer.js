@@ -87,7 +87,7 @@ export class Announcer {
     else if (ev.type === 'card') this._card(ev.color, ev.player.unum, ev.player.side);
     else if (ev.type === 'foul') {
       this.counts.banners++;
-      // The mode names the team that gets the free kick.
+      // ev.side gets the free kick (the mode names the team that fouled).
       this.hud.banner(`Foul: free kick ${this._team(ev.side)}`, 'foul');
     }
   }

@@ -1,7 +1,7 @@
 // Match events read from the frames the playhead passes: kicks (for the
 // sound), goals, cards and fouls (for the banners). The detector remembers
 // the previous frame, so each event fires once, when the picture reaches it.
-import { STATE, isGoalMode, isFoulMode, playModeName, playModeSide } from './playmodes.js';
+import { STATE, freeKickSide, isGoalMode, isFoulMode, playModeName, playModeSide } from './playmodes.js';
 
 export class EventDetector {
   constructor() { this.prev = null; }
@@ -20,7 +20,10 @@ export class EventDetector {
     if (f.playMode !== prev.playMode) {
       const name = playModeName(f.playMode);
       if (isGoalMode(f.playMode)) out.push({ type: 'goal', side: playModeSide(f.playMode), frame: f });
-      else if (isFoulMode(f.playMode)) out.push({ type: 'foul', side: playModeSide(f.playMode), mode: name, frame: f });
+      else if (isFoulMode(f.playMode)) {
+        // side: the team that gets the free kick; offender: the one the mode names.
+        out.push({ type: 'foul', side: freeKickSide(f.playMode), offender: playModeSide(f.playMode), mode: name, frame: f });
+      }
     }
     if (f.scoreLeft + f.scoreRight > prev.scoreLeft + prev.scoreRight && !isGoalMode(f.playMode) &&
         !isGoalMode(prev.playMode)) {

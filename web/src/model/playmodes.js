@@ -32,10 +32,19 @@ export function playModeLabel(mode) {
   return `${m[1].replaceAll('_', ' ')} (${m[2].toUpperCase()})`;
 }
 
-// Which team a mode favours: 'l', 'r' or ''.
+// The team a mode names, 'l', 'r' or '': for a restart the team that
+// restarts, for a goal the team that scored, for an infringement (offside,
+// a foul, a back pass...) the team that committed it.
 export function playModeSide(mode) {
   const m = /_([lr])$/.exec(playModeName(mode));
   return m ? m[1] : '';
+}
+
+// For an infringement, the team that gets the free kick: the other one
+// (rcssserver's referee: foul_charge_r is followed by free_kick_l).
+export function freeKickSide(mode) {
+  const side = playModeSide(mode);
+  return side === 'l' ? 'r' : side === 'r' ? 'l' : '';
 }
 
 export function isGoalMode(mode) {
