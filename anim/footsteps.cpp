@@ -4,11 +4,11 @@
 #include <cmath>
 
 #include "anim/body_frame.hpp"
+#include "anim/exp2_remembered.hpp"
 #include "anim/foot_passing.hpp"
 #include "anim/human_skeleton.hpp"
 #include "anim/portable_math.hpp"
 #include "anim/segment_distance.hpp"
-#include "anim/exp2_remembered.hpp"
 #include "anim/sincos_deg.hpp"
 
 namespace mc::anim {
